@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+#pragma once
+#include <string>
+
+namespace silodem::app {
+
+struct RunOptions {
+  std::string case_path;
+  std::string out_dir;
+  int threads = 0;
+};
+
+int run_command(const RunOptions& o);
+int check_command(const std::string& case_path, bool json);
+
+// Exit codes.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitInput = 2;       // bad case file or command line
+inline constexpr int kExitSimulation = 3;  // the simulation went wrong
+
+}  // namespace silodem::app

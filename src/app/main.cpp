@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// silodem: coarse-grained DEM of wet, cohesive coal discharging from a silo.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+#include "io/config/schema.hpp"
+
+int main(int argc, char** argv) {
+  using namespace silodem;
+  CLI::App cli{"silodem - coarse-grained DEM of wet coal discharging from silos"};
+  cli.require_subcommand(1);
+
+  app::RunOptions run;
+  auto* run_cmd = cli.add_subcommand("run", "run a case and write its results into a directory");
+  run_cmd->add_option("case", run.case_path, "case file (TOML)")->required()->check(CLI::ExistingFile);
+  run_cmd->add_option("--out", run.out_dir, "output directory (must not exist or be empty)")->required();
+  run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: case file, else all)")
+      ->check(CLI::Range(1, 1024));
+
+  std::string check_path;
+  bool json = false;
+  auto* check_cmd = cli.add_subcommand("check", "validate a case and print the derived quantities");
+  check_cmd->add_option("case", check_path, "case file (TOML)")->required()->check(CLI::ExistingFile);
+  check_cmd->add_flag("--json", json, "print one JSON object");
+
+  auto* docs_cmd = cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
+
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = cli.exit(e);
+    return code == 0 ? 0 : app::kExitInput;
+  }
+  try {
+    if (*run_cmd) return app::run_command(run);
+    if (*check_cmd) return app::check_command(check_path, json);
+    if (*docs_cmd) {
+      fmt::print("{}", config::markdown());
+      return 0;
+    }
+  } catch (const InputError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return app::kExitInput;
+  } catch (const SimulationError& e) {
+    fmt::print(stderr, "simulation error: {}\n", e.what());
+    return app::kExitSimulation;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+#include "engine/neighbor/cell_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace silodem {
+
+void CellGrid::build(const std::vector<Vec3>& x, double min_cell, std::size_t max_cells) {
+  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
+  for (const Vec3& p : x) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  if (x.empty()) lo = hi = Vec3{};
+  lo_ = lo;
+  const Vec3 ext = hi - lo;
+  cell_ = min_cell;
+  for (;;) {
+    dims_ = {std::max(1, static_cast<int>(ext.x / cell_) + 1),
+             std::max(1, static_cast<int>(ext.y / cell_) + 1),
+             std::max(1, static_cast<int>(ext.z / cell_) + 1)};
+    const double n = double(dims_[0]) * dims_[1] * dims_[2];
+    if (n <= double(max_cells)) break;
+    cell_ *= std::cbrt(n / double(max_cells)) * 1.01;
+  }
+  const int ncell = dims_[0] * dims_[1] * dims_[2];
+  start_.assign(ncell + 1, 0);
+  cell_of_particle_.resize(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const auto c = cell_of(x[i]);
+    cell_of_particle_[i] = cell_index(c[0], c[1], c[2]);
+    ++start_[cell_of_particle_[i] + 1];
+  }
+  for (int c = 0; c < ncell; ++c) start_[c + 1] += start_[c];
+  order_.resize(x.size());
+  std::vector<int> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t i = 0; i < x.size(); ++i) order_[fill[cell_of_particle_[i]]++] = int(i);
+}
+
+std::array<int, 3> CellGrid::cell_of(const Vec3& p) const {
+  auto clampi = [](double v, int n) { return std::clamp(static_cast<int>(v), 0, n - 1); };
+  return {clampi((p.x - lo_.x) / cell_, dims_[0]), clampi((p.y - lo_.y) / cell_, dims_[1]),
+          clampi((p.z - lo_.z) / cell_, dims_[2])};
+}
+
+}  // namespace silodem

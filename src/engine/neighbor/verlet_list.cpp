@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: MIT
+#include "engine/neighbor/verlet_list.hpp"
+
+#include <algorithm>
+
+namespace silodem {
+namespace {
+
+bool nonzero(const ContactState& s) {
+  return norm2(s.tangential) > 0.0 || norm2(s.rolling) > 0.0;
+}
+ContactState flipped(const ContactState& s) { return {-s.tangential, -s.rolling}; }
+bool key_less(std::uint64_t a1, std::uint64_t b1, std::uint64_t a2, std::uint64_t b2) {
+  return a1 != a2 ? a1 < a2 : b1 < b2;
+}
+
+}  // namespace
+
+void VerletList::stash_history(const ParticleStore& p) {
+  saved_pairs_.clear();
+  saved_walls_.clear();
+  const std::size_t n = offset.empty() ? 0 : offset.size() - 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int e = offset[i]; e < offset[i + 1]; ++e) {
+      if (!nonzero(state[e])) continue;
+      const std::uint64_t a = p.id[i], b = p.id[partner[e]];
+      if (a < b)
+        saved_pairs_.push_back({a, b, state[e]});
+      else
+        saved_pairs_.push_back({b, a, flipped(state[e])});
+    }
+    for (int e = wall_offset[i]; e < wall_offset[i + 1]; ++e)
+      if (nonzero(wall_state[e]))
+        saved_walls_.push_back({p.id[i], std::uint64_t(wall[e]), wall_state[e]});
+  }
+  auto less = [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); };
+  std::sort(saved_pairs_.begin(), saved_pairs_.end(), less);
+  std::sort(saved_walls_.begin(), saved_walls_.end(), less);
+  stashed_ = true;
+}
+
+void VerletList::build(const ParticleStore& p, const WallList& walls, double skin_,
+                       double reach_over_d) {
+  if (!stashed_) stash_history(p);
+  skin = skin_;
+  const std::size_t n = p.size();
+  double r_max = 0.0;
+  for (double r : p.radius) r_max = std::max(r_max, r);
+  const double cut_max = 2.0 * r_max * (1.0 + reach_over_d) + skin;
+  grid_.build(p.x, cut_max, 8 * n + 64);
+  const auto& dims = grid_.dims();
+  const auto& start = grid_.start();
+  const auto& order = grid_.order();
+
+  // Two passes over i (count, then fill) give a CSR list whose order depends only on the
+  // particle order, not on the thread count.
+  std::vector<int> count(n + 1, 0);
+  auto visit = [&](std::size_t i, auto&& emit) {
+    const auto c = grid_.cell_of(p.x[i]);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int cx = c[0] + dx, cy = c[1] + dy, cz = c[2] + dz;
+          if (cx < 0 || cy < 0 || cz < 0 || cx >= dims[0] || cy >= dims[1] || cz >= dims[2])
+            continue;
+          const int cell = grid_.cell_index(cx, cy, cz);
+          for (int k = start[cell]; k < start[cell + 1]; ++k) {
+            const int j = order[k];
+            if (j <= int(i)) continue;
+            const double sum_r = p.radius[i] + p.radius[j];
+            const double cut = sum_r * (1.0 + reach_over_d) + skin;
+            if (norm2(p.x[i] - p.x[j]) < cut * cut) emit(j);
+          }
+        }
+  };
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    int c = 0;
+    visit(i, [&](int) { ++c; });
+    count[i + 1] = c;
+  }
+  offset.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) offset[i + 1] = offset[i] + count[i + 1];
+  partner.assign(offset[n], 0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<int> mine;
+    visit(i, [&](int j) { mine.push_back(j); });
+    std::sort(mine.begin(), mine.end());  // cell order is arbitrary; index order is canonical
+    std::copy(mine.begin(), mine.end(), partner.begin() + offset[i]);
+  }
+
+  // Wall candidates.
+  std::vector<int> wcount(n + 1, 0);
+  const double w_skin = skin;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    WallHit hit;
+    const double limit = p.radius[i] * (1.0 + 2.0 * reach_over_d) + w_skin;
+    int c = 0;
+    for (const auto& w : walls) c += w->near(p.x[i], limit, hit) ? 1 : 0;
+    wcount[i + 1] = c;
+  }
+  wall_offset.assign(n + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) wall_offset[i + 1] = wall_offset[i] + wcount[i + 1];
+  wall.assign(wall_offset[n], 0);
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    WallHit hit;
+    const double limit = p.radius[i] * (1.0 + 2.0 * reach_over_d) + w_skin;
+    int e = wall_offset[i];
+    for (std::size_t k = 0; k < walls.size(); ++k)
+      if (walls[k]->near(p.x[i], limit, hit)) wall[e++] = int(k);
+  }
+
+  // Re-attach the history by stable ids.
+  state.assign(partner.size(), ContactState{});
+  wall_state.assign(wall.size(), ContactState{});
+  if (!saved_pairs_.empty() || !saved_walls_.empty()) {
+    auto find = [](const std::vector<Saved>& v, std::uint64_t a, std::uint64_t b) -> const Saved* {
+      auto it = std::lower_bound(v.begin(), v.end(), Saved{a, b, {}}, [](const Saved& l, const Saved& r) {
+        return key_less(l.a, l.b, r.a, r.b);
+      });
+      return (it != v.end() && it->a == a && it->b == b) ? &*it : nullptr;
+    };
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int e = offset[i]; e < offset[i + 1]; ++e) {
+        const std::uint64_t a = p.id[i], b = p.id[partner[e]];
+        if (const Saved* s = a < b ? find(saved_pairs_, a, b) : find(saved_pairs_, b, a))
+          state[e] = a < b ? s->s : flipped(s->s);
+      }
+      for (int e = wall_offset[i]; e < wall_offset[i + 1]; ++e)
+        if (const Saved* s = find(saved_walls_, p.id[i], std::uint64_t(wall[e])))
+          wall_state[e] = s->s;
+    }
+  }
+  saved_pairs_.clear();
+  saved_walls_.clear();
+  stashed_ = false;
+  x_at_build_ = p.x;
+  ++builds;
+}
+
+bool VerletList::needs_rebuild(const ParticleStore& p) const {
+  if (x_at_build_.size() != p.size()) return true;
+  const double limit2 = 0.25 * skin * skin;
+  const std::size_t n = p.size();
+  int moved = 0;
+#pragma omp parallel for schedule(static) reduction(| : moved)
+  for (std::size_t i = 0; i < n; ++i) moved |= norm2(p.x[i] - x_at_build_[i]) > limit2 ? 1 : 0;
+  return moved != 0;
+}
+
+}  // namespace silodem

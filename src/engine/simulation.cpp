@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: MIT
+#include "engine/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace silodem {
+namespace {
+
+int thread_count(int requested) {
+#ifdef _OPENMP
+  return requested > 0 ? requested : omp_get_max_threads();
+#else
+  (void)requested;
+  return 1;
+#endif
+}
+
+BodyState body(const ParticleStore& p, std::size_t i) {
+  return {p.x[i], p.v[i], p.omega[i], p.radius[i], p.mass[i], 1.0 / p.inv_inertia[i]};
+}
+
+}  // namespace
+
+Simulation::Simulation(ContactModel model, SimulationSettings settings)
+    : model_(std::move(model)), s_(settings) {
+  s_.threads = thread_count(s_.threads);
+}
+
+void Simulation::add_wall(std::unique_ptr<Wall> w) {
+  walls_.push_back(std::move(w));
+  rebuild_pending_ = true;
+}
+
+void Simulation::initialize() {
+  update_neighbors();
+  compute_forces();
+  initialized_ = true;
+}
+
+void Simulation::update_neighbors() {
+  if (rebuild_pending_ || list_.needs_rebuild(p_)) {
+    list_.build(p_, walls_, s_.skin, model_.max_reach_over_d());
+    rebuild_pending_ = false;
+  }
+}
+
+void Simulation::run_hooks(Phase ph) {
+  for (auto& h : hooks_)
+    if (h.phase == ph && steps_ % h.every == 0) h.run(*this);
+}
+
+void Simulation::step() {
+  if (!initialized_) initialize();
+  run_hooks(Phase::StepBegin);
+  const double dt = s_.dt, half = 0.5 * dt;
+  const std::size_t n = p_.size();
+#pragma omp parallel for schedule(static) num_threads(s_.threads)
+  for (std::size_t i = 0; i < n; ++i) {
+    p_.v[i] += p_.f[i] * (half * p_.inv_mass[i]);
+    p_.omega[i] += p_.t[i] * (half * p_.inv_inertia[i]);
+    p_.x[i] += p_.v[i] * dt;
+  }
+  update_neighbors();
+  compute_forces();
+#pragma omp parallel for schedule(static) num_threads(s_.threads)
+  for (std::size_t i = 0; i < n; ++i) {
+    p_.v[i] += p_.f[i] * (half * p_.inv_mass[i]);
+    p_.omega[i] += p_.t[i] * (half * p_.inv_inertia[i]);
+  }
+  time_ += dt;
+  ++steps_;
+  if (steps_ % 256 == 0) check_state();
+  run_hooks(Phase::StepEnd);
+}
+
+void Simulation::run_steps(long n) {
+  for (long k = 0; k < n; ++k) step();
+}
+
+void Simulation::run_until(double t_end) {
+  while (time_ + 0.5 * s_.dt < t_end) step();
+}
+
+void Simulation::compute_forces() {
+  const std::size_t n = p_.size();
+  const int nt = s_.threads;
+  const double dt = s_.dt;
+  if (int(f_buf_.size()) != nt) {
+    f_buf_.assign(nt, {});
+    t_buf_.assign(nt, {});
+  }
+#pragma omp parallel num_threads(nt)
+  {
+#ifdef _OPENMP
+    const int tid = omp_get_thread_num();
+#else
+    const int tid = 0;
+#endif
+    auto& fb = f_buf_[tid];
+    auto& tb = t_buf_[tid];
+    fb.assign(n, Vec3{});
+    tb.assign(n, Vec3{});
+    // Pair contacts (half list). Each thread accumulates into its own buffer; the buffers are
+    // summed in thread order below, so a run is bitwise reproducible for a given thread count.
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const int mi = p_.material[i];
+      for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
+        const int j = list_.partner[e];
+        const ContactLaw& law = model_.pair(mi, p_.material[j]);
+        const double sum_r = p_.radius[i] + p_.radius[j];
+        const double reach = sum_r * (1.0 + law.cp.reach_over_d);
+        const double d2 = norm2(p_.x[i] - p_.x[j]);
+        ContactState& st = list_.state[e];
+        if (d2 >= reach * reach) {
+          st = ContactState{};
+          continue;
+        }
+        const ContactGeometry g = pair_geometry(body(p_, i), body(p_, j));
+        const ContactResult r = evaluate_contact(law, g, st, dt);
+        fb[i] += r.force_i;
+        fb[j] -= r.force_i;
+        tb[i] += r.torque_i;
+        tb[j] += r.torque_j;
+      }
+    }
+    // Walls: each particle belongs to one thread, so write into its own buffer too.
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      const ContactLaw& law = model_.wall(p_.material[i]);
+      const double reach = p_.radius[i] * (1.0 + 2.0 * law.cp.reach_over_d);
+      for (int e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e) {
+        const Wall& w = *walls_[list_.wall[e]];
+        ContactState& st = list_.wall_state[e];
+        WallHit hit;
+        if (!w.near(p_.x[i], reach, hit)) {
+          st = ContactState{};
+          continue;
+        }
+        const ContactGeometry g = wall_geometry(body(p_, i), hit.n, hit.distance, w.velocity());
+        const ContactResult r = evaluate_contact(law, g, st, dt);
+        fb[i] += r.force_i;
+        tb[i] += r.torque_i;
+      }
+    }
+    // Reduce: gravity + external force + the per-thread buffers in fixed order.
+#pragma omp for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) {
+      Vec3 f = s_.gravity * p_.mass[i] + p_.f_ext[i];
+      Vec3 t;
+      for (int k = 0; k < nt; ++k) {
+        f += f_buf_[k][i];
+        t += t_buf_[k][i];
+      }
+      p_.f[i] = f;
+      p_.t[i] = t;
+    }
+  }
+}
+
+void Simulation::remove_particles(std::vector<std::size_t> idx) {
+  if (idx.empty()) return;
+  list_.stash_history(p_);
+  std::sort(idx.begin(), idx.end());
+  idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
+  // Remove from the highest index down so that swapped-in particles are never ones to remove.
+  for (auto it = idx.rbegin(); it != idx.rend(); ++it) p_.remove(*it);
+  rebuild_pending_ = true;
+  // Forces of the remaining particles still include the removed ones until the next step's
+  // force pass; that is the usual sink convention.
+}
+
+const ContactState* Simulation::contact_state(std::uint64_t a, std::uint64_t b,
+                                              bool* flipped) const {
+  const long ia = p_.index_of(a), ib = p_.index_of(b);
+  if (ia < 0 || ib < 0) return nullptr;
+  const long lo = std::min(ia, ib), hi = std::max(ia, ib);
+  for (int e = list_.offset[lo]; e < list_.offset[lo + 1]; ++e)
+    if (list_.partner[e] == hi) {
+      if (flipped) *flipped = (lo != ia);
+      return &list_.state[e];
+    }
+  return nullptr;
+}
+
+EnergyBudget Simulation::energy() const {
+  EnergyBudget e;
+  const double g = norm(s_.gravity);
+  const Vec3 up = g > 0 ? -s_.gravity / g : Vec3{0, 0, 1};
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    e.translational += 0.5 * p_.mass[i] * norm2(p_.v[i]);
+    e.rotational += 0.5 / p_.inv_inertia[i] * norm2(p_.omega[i]);
+    e.gravitational += p_.mass[i] * g * dot(p_.x[i], up);
+    for (int k = list_.offset[i]; k < list_.offset[i + 1]; ++k) {
+      const int j = list_.partner[k];
+      const double ov = p_.radius[i] + p_.radius[j] - norm(p_.x[i] - p_.x[j]);
+      if (ov > 0) e.elastic += 0.5 * model_.pair(p_.material[i], p_.material[j]).np.stiffness * ov * ov;
+    }
+    for (int k = list_.wall_offset[i]; k < list_.wall_offset[i + 1]; ++k) {
+      WallHit hit;
+      if (walls_[list_.wall[k]]->near(p_.x[i], p_.radius[i], hit)) {
+        const double ov = p_.radius[i] - hit.distance;
+        e.elastic += 0.5 * model_.wall(p_.material[i]).np.stiffness * ov * ov;
+      }
+    }
+  }
+  return e;
+}
+
+void Simulation::check_state() const {
+  for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (!is_finite(p_.x[i]) || !is_finite(p_.v[i]) || !is_finite(p_.omega[i]))
+      throw SimulationError(fmt::format(
+          "particle {} has a non-finite state at step {} (t = {:.6g} s): position ({}, {}, {}), "
+          "velocity ({}, {}, {}); likely cause: time step too large for the stiffness (dt = {:.3g} "
+          "s) or particles created overlapping",
+          p_.id[i], steps_, time_, p_.x[i].x, p_.x[i].y, p_.x[i].z, p_.v[i].x, p_.v[i].y,
+          p_.v[i].z, s_.dt));
+  }
+}
+
+}  // namespace silodem

@@ -1,0 +1,82 @@
+// SPDX-License-Identifier: MIT
+// Owns the particles, walls, neighbour list with contact history and the contact model, and
+// advances them in time with velocity Verlet:
+//   hooks(begin) -> v += F/m dt/2 -> x += v dt -> neighbours -> forces -> v += F/m dt/2 -> hooks(end)
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "engine/hooks.hpp"
+#include "engine/neighbor/verlet_list.hpp"
+#include "engine/particle_store.hpp"
+#include "engine/walls/wall.hpp"
+#include "model/contact/contact_model.hpp"
+
+namespace silodem {
+
+struct SimulationSettings {
+  double dt = 1e-5;                  // s
+  Vec3 gravity{0.0, 0.0, -9.81};     // m/s^2
+  double skin = 1e-3;                // m, Verlet skin
+  int threads = 0;                   // 0 = OpenMP default
+};
+
+struct EnergyBudget {
+  double translational = 0.0, rotational = 0.0, gravitational = 0.0, elastic = 0.0;
+  double total() const { return translational + rotational + gravitational + elastic; }
+};
+
+class Simulation {
+ public:
+  Simulation(ContactModel model, SimulationSettings settings);
+
+  ParticleStore& particles() { return p_; }
+  const ParticleStore& particles() const { return p_; }
+  const ContactModel& model() const { return model_; }
+  const SimulationSettings& settings() const { return s_; }
+  void set_gravity(const Vec3& g) { s_.gravity = g; }
+  void add_wall(std::unique_ptr<Wall> w);
+  const WallList& walls() const { return walls_; }
+  void add_hook(Hook h) { hooks_.push_back(std::move(h)); }
+
+  // Builds the neighbour list and the forces of the initial state. Called by step() if needed.
+  void initialize();
+  void step();
+  void run_steps(long n);
+  void run_until(double t_end);  // steps while time() < t_end (within half a step)
+
+  double time() const { return time_; }
+  long step_count() const { return steps_; }
+  double dt() const { return s_.dt; }
+
+  // Removes particles by index (any order); contact history of the others is kept.
+  void remove_particles(std::vector<std::size_t> indices);
+  // Forces a neighbour-list rebuild before the next force evaluation (tests, wall changes).
+  void request_rebuild() { rebuild_pending_ = true; }
+  const VerletList& neighbors() const { return list_; }
+
+  // History of the contact between two particles (by stable id), or nullptr.
+  const ContactState* contact_state(std::uint64_t id_a, std::uint64_t id_b, bool* flipped) const;
+  // Kinetic, rotational, gravitational (relative to z = 0 along -gravity) and spring energy.
+  EnergyBudget energy() const;
+
+ private:
+  void compute_forces();
+  void update_neighbors();
+  void run_hooks(Phase ph);
+  void check_state() const;
+
+  ContactModel model_;
+  SimulationSettings s_;
+  ParticleStore p_;
+  WallList walls_;
+  VerletList list_;
+  std::vector<Hook> hooks_;
+  std::vector<std::vector<Vec3>> f_buf_, t_buf_;  // per-thread force/torque buffers
+  double time_ = 0.0;
+  long steps_ = 0;
+  bool initialized_ = false;
+  bool rebuild_pending_ = true;
+};
+
+}  // namespace silodem

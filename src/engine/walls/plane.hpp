@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// An infinite plane through `point` whose particle side is along `normal`.
+#pragma once
+#include "engine/walls/wall.hpp"
+
+namespace silodem {
+
+class PlaneWall final : public Wall {
+ public:
+  PlaneWall(const Vec3& point, const Vec3& normal);
+  bool near(const Vec3& c, double limit, WallHit& hit) const override;
+  std::string describe() const override;
+
+ private:
+  Vec3 p_, n_;
+};
+
+}  // namespace silodem

@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+// A wall is a surface that can tell, for a sphere centre, the nearest surface point's normal and
+// distance. New shapes: one file in walls/ plus one line in walls/registry.cpp.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/schema.hpp"
+#include "core/vec3.hpp"
+
+namespace silodem {
+
+struct WallHit {
+  Vec3 n;                 // unit normal from the surface towards the centre
+  double distance = 0.0;  // centre-to-surface distance along n (negative: centre behind it)
+};
+
+class Wall {
+ public:
+  virtual ~Wall() = default;
+  // True (and `hit` filled) when the centre is closer than `limit` to the surface.
+  virtual bool near(const Vec3& centre, double limit, WallHit& hit) const = 0;
+  virtual Vec3 velocity() const { return {}; }
+  virtual std::string describe() const = 0;
+};
+
+using WallList = std::vector<std::unique_ptr<Wall>>;
+
+struct WallEntry {
+  const char* name;
+  const char* summary;
+  std::vector<Field> (*fields)();
+  // A wall entry may produce several surfaces (a box is six planes).
+  WallList (*make)(const ParamValues& values);
+};
+
+const std::vector<WallEntry>& wall_types();
+const WallEntry* find_wall_type(const std::string& name);
+
+}  // namespace silodem

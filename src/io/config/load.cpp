@@ -1,0 +1,436 @@
+// SPDX-License-Identifier: MIT
+#include "io/config/load.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "engine/walls/wall.hpp"
+#include "io/config/schema.hpp"
+#include "model/contact/registry.hpp"
+
+namespace silodem::config {
+namespace {
+
+struct Reader {
+  std::string file;
+
+  SourcePlace place(const toml::node& n) const {
+    const auto& s = n.source();
+    return {file, int(s.begin.line), int(s.begin.column)};
+  }
+
+  std::string type_name(FieldKind k) const {
+    switch (k) {
+      case FieldKind::Number: return "a number";
+      case FieldKind::Integer: return "an integer";
+      case FieldKind::Bool: return "true or false";
+      case FieldKind::String: return "a string";
+      case FieldKind::Vec3: return "an array of 3 numbers";
+      case FieldKind::IntegerList: return "an array of integers";
+    }
+    return "?";
+  }
+
+  static std::string show(const toml::node& n) {
+    std::ostringstream os;
+    if (n.is_table()) return "a table";
+    if (n.is_array()) {
+      os << *n.as_array();
+      return os.str();
+    }
+    os << toml::node_view<const toml::node>(n);
+    return os.str();
+  }
+
+  // Validates table `t` against `fields` (plus `extra_keys` that the caller reads itself).
+  ParamValues read(const toml::table& t, const std::vector<Field>& fields,
+                   const std::string& section, const std::vector<std::string>& extra_keys = {}) {
+    ParamValues v;
+    v.section = section;
+    v.place = place(t);
+    std::vector<std::string> known = extra_keys;
+    for (const auto& f : fields) known.push_back(f.key);
+    for (const auto& [k, node] : t) {
+      const std::string key(k.str());
+      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+      const std::string hint = did_you_mean(key, known);
+      throw InputError(place(node), section.empty() ? key : section + "." + key,
+                       hint.empty() ? fmt::format("unknown key; allowed here: {}", fmt::join(known, ", "))
+                                    : fmt::format("unknown key; did you mean '{}'?", hint));
+    }
+    for (const auto& f : fields) {
+      const toml::node* node = t.get(f.key);
+      const std::string full = section.empty() ? f.key : section + "." + f.key;
+      if (!node) {
+        if (f.required) throw InputError(v.place, full, "missing required key (" + f.doc + ")");
+        v.given[f.key] = false;
+        switch (f.kind) {
+          case FieldKind::String: v.strings[f.key] = f.default_string; break;
+          case FieldKind::Vec3: v.vectors[f.key] = Vec3{}; break;
+          case FieldKind::IntegerList: v.lists[f.key] = {}; break;
+          default:
+            if (f.default_number) v.numbers[f.key] = *f.default_number * f.to_si;
+        }
+        continue;
+      }
+      v.given[f.key] = true;
+      const SourcePlace at = place(*node);
+      v.places[f.key] = at;
+      auto bad_type = [&]() {
+        return InputError(at, full, fmt::format("= {} must be {}", show(*node), type_name(f.kind)));
+      };
+      auto check_number = [&](double x) {
+        if (!f.in_range(x))
+          throw InputError(at, full,
+                           fmt::format("= {} is out of range; allowed {}{}", show(*node),
+                                       f.range_text(), f.unit.empty() ? "" : " " + f.unit));
+        return x * f.to_si;
+      };
+      switch (f.kind) {
+        case FieldKind::Number: {
+          if (!node->is_number()) throw bad_type();
+          v.numbers[f.key] = check_number(node->value<double>().value());
+          break;
+        }
+        case FieldKind::Integer: {
+          if (!node->is_integer()) throw bad_type();
+          v.numbers[f.key] = check_number(double(node->value<std::int64_t>().value()));
+          break;
+        }
+        case FieldKind::Bool:
+          if (!node->is_boolean()) throw bad_type();
+          v.numbers[f.key] = node->value<bool>().value() ? 1.0 : 0.0;
+          break;
+        case FieldKind::String: {
+          if (!node->is_string()) throw bad_type();
+          std::string s = node->value<std::string>().value();
+          if (!f.choices.empty() && std::find(f.choices.begin(), f.choices.end(), s) == f.choices.end()) {
+            const std::string hint = did_you_mean(s, f.choices);
+            throw InputError(at, full,
+                             fmt::format("= \"{}\" is not allowed; choose one of: {}{}", s,
+                                         fmt::join(f.choices, ", "),
+                                         hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+          }
+          if (s.empty()) throw InputError(at, full, "must not be empty");
+          v.strings[f.key] = std::move(s);
+          break;
+        }
+        case FieldKind::Vec3: {
+          const toml::array* a = node->as_array();
+          if (!a || a->size() != 3) throw bad_type();
+          double c[3];
+          for (int i = 0; i < 3; ++i) {
+            if (!(*a)[i].is_number()) throw bad_type();
+            c[i] = (*a)[i].value<double>().value();
+            if (!std::isfinite(c[i])) throw InputError(at, full, "components must be finite");
+            c[i] *= f.to_si;
+          }
+          v.vectors[f.key] = {c[0], c[1], c[2]};
+          break;
+        }
+        case FieldKind::IntegerList: {
+          const toml::array* a = node->as_array();
+          if (!a) throw bad_type();
+          std::vector<double> out;
+          for (const auto& e : *a) {
+            if (!e.is_integer() || e.value<std::int64_t>().value() < 0) throw bad_type();
+            out.push_back(double(e.value<std::int64_t>().value()));
+          }
+          v.lists[f.key] = std::move(out);
+          break;
+        }
+      }
+    }
+    return v;
+  }
+
+  const toml::table& table_at(const toml::node& n, const std::string& key) {
+    if (!n.is_table()) throw InputError(place(n), key, "must be a table");
+    return *n.as_table();
+  }
+
+  // [[name]] or a single [name] table -> list of tables.
+  std::vector<const toml::table*> tables(const toml::table& root, const std::string& key) {
+    std::vector<const toml::table*> out;
+    const toml::node* n = root.get(key);
+    if (!n) return out;
+    if (n->is_table()) return {n->as_table()};
+    const toml::array* a = n->as_array();
+    if (!a) throw InputError(place(*n), key, "must be [[" + key + "]] tables");
+    for (const auto& e : *a) {
+      if (!e.is_table()) throw InputError(place(e), key, "must be [[" + key + "]] tables");
+      out.push_back(e.as_table());
+    }
+    return out;
+  }
+
+  SlotChoice slot(const toml::table& contact, const std::string& section, Slot s, bool wall) {
+    const std::string key = slot_name(s);
+    const std::string full = section + "." + key;
+    const toml::node* n = contact.get(key);
+    SlotChoice c;
+    if (!n) {
+      if (s == Slot::Normal) throw InputError(place(contact), full, "missing required slot (e.g. { law = \"linear_spring_dashpot\", stiffness = 1e5, restitution = 0.1 })");
+      c.law = "none";
+      c.values.section = full;
+      c.values.place = place(contact);
+      return c;
+    }
+    const toml::table& t = table_at(*n, full);
+    const toml::node* law = t.get("law");
+    const auto names = law_names(s);
+    if (!law || !law->is_string())
+      throw InputError(place(t), full + ".law",
+                       fmt::format("missing or not a string; choose one of: {}", fmt::join(names, ", ")));
+    c.law = law->value<std::string>().value();
+    const LawEntry* e = find_law(s, c.law);
+    if (!e) {
+      const std::string hint = did_you_mean(c.law, names);
+      throw InputError(place(*law), full + ".law",
+                       fmt::format("= \"{}\" is not a {} law; choose one of: {}{}", c.law, key,
+                                   fmt::join(names, ", "),
+                                   hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+    }
+    c.values = read(t, e->fields(wall), full, {"law"});
+    return c;
+  }
+
+  ContactSpec contact(const toml::table& root, const std::string& which, bool wall) {
+    const std::string section = "contact." + which;
+    const toml::node* cn = root.get("contact");
+    if (!cn) throw InputError({file, 1, 1}, "contact", "missing required section [contact." + which + "]");
+    const toml::table& ct = table_at(*cn, "contact");
+    const toml::node* n = ct.get(which);
+    if (!n) throw InputError(place(ct), section, "missing required section [" + section + "]");
+    const toml::table& t = table_at(*n, section);
+    for (const auto& [k, node] : t) {
+      const std::string key(k.str());
+      const std::vector<std::string> slots = {"normal", "tangential", "rolling", "cohesion"};
+      if (std::find(slots.begin(), slots.end(), key) == slots.end()) {
+        const std::string hint = did_you_mean(key, slots);
+        throw InputError(place(node), section + "." + key,
+                         "unknown slot" + (hint.empty() ? "; slots are normal, tangential, rolling, cohesion"
+                                                        : "; did you mean '" + hint + "'?"));
+      }
+    }
+    ContactSpec spec;
+    spec.normal = slot(t, section, Slot::Normal, wall);
+    spec.tangential = slot(t, section, Slot::Tangential, wall);
+    spec.rolling = slot(t, section, Slot::Rolling, wall);
+    spec.cohesion = slot(t, section, Slot::Cohesion, wall);
+    return spec;
+  }
+};
+
+int coal_index(const Case& c, const ParamValues& v, const std::string& key) {
+  const std::string& name = v.string(key);
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < c.coals.size(); ++i) {
+    if (c.coals[i].name == name) return int(i);
+    names.push_back(c.coals[i].name);
+  }
+  const std::string hint = did_you_mean(name, names);
+  throw v.error(key, fmt::format("= \"{}\" is not a [[coal]] name; known: {}{}", name,
+                                 fmt::join(names, ", "),
+                                 hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+}
+
+Case build(const toml::table& root, const std::string& file) {
+  Reader r{file};
+  Case c;
+  c.path = file;
+  const auto top = top_level_keys();
+  for (const auto& [k, node] : root) {
+    const std::string key(k.str());
+    if (std::find(top.begin(), top.end(), key) != top.end()) continue;
+    const std::string hint = did_you_mean(key, top);
+    throw InputError(r.place(node), key,
+                     hint.empty() ? fmt::format("unknown section; allowed: {}", fmt::join(top, ", "))
+                                  : fmt::format("unknown section; did you mean '{}'?", hint));
+  }
+  if (const toml::node* t = root.get("title")) {
+    if (!t->is_string()) throw InputError(r.place(*t), "title", "must be a string");
+    c.title = t->value<std::string>().value();
+  }
+
+  static const toml::table empty;
+  auto single = [&](const std::string& name) -> const toml::table& {
+    const toml::node* n = root.get(name);
+    return n ? r.table_at(*n, name) : empty;
+  };
+
+  // [simulation]
+  {
+    const ParamValues v = r.read(single("simulation"), section("simulation").fields, "simulation");
+    c.time.end_time = v.number("end_time");
+    c.time.time_step = v.number("time_step");
+    c.time.steps_per_collision = v.number("steps_per_collision");
+    if (v.was_given("gravity")) c.time.gravity = v.vector("gravity");
+    c.time.skin = v.number("skin");
+    c.time.threads = int(v.number("threads"));
+    c.time.seed = std::uint64_t(v.number("seed"));
+    c.time.time_step_place = v.places.count("time_step") ? v.places.at("time_step") : v.place;
+    c.time.steps_place = v.place;
+  }
+  // [coarse_graining]
+  {
+    const ParamValues v = r.read(single("coarse_graining"), section("coarse_graining").fields,
+                                 "coarse_graining");
+    c.cg.k = v.number("k");
+    c.cg.cohesion_exponent = v.number("cohesion_exponent");
+    c.cg.restitution_policy = restitution_policy_from_name(v.string("restitution_policy"));
+    c.cg.restitution_floor = v.number("restitution_floor");
+  }
+  // [[coal]]
+  const auto coal_tables = r.tables(root, "coal");
+  if (coal_tables.empty())
+    throw InputError({file, 1, 1}, "coal", "missing: at least one [[coal]] table is required");
+  for (std::size_t i = 0; i < coal_tables.size(); ++i) {
+    const std::string sec = fmt::format("coal[{}]", i);
+    const ParamValues v = r.read(*coal_tables[i], section("coal").fields, sec);
+    CoalProperties p;
+    p.name = v.string("name");
+    for (const auto& other : c.coals)
+      if (other.name == p.name) throw v.error("name", "= \"" + p.name + "\" is used by two coals");
+    p.diameter = v.number("diameter_mm");
+    p.sauter_diameter = v.was_given("sauter_diameter_mm") ? v.number("sauter_diameter_mm") : p.diameter;
+    p.true_density = v.number("true_density_kg_m3");
+    p.heating_value = v.number("heating_value_kcal_kg");
+    if (v.was_given("cohesion_force_n")) p.cohesion_force_override = v.number("cohesion_force_n");
+    const bool measured_needed = !p.cohesion_force_override;
+    for (const char* key : {"bulk_density_kg_m3", "cohesion_kpa", "friction_angle_deg", "moisture_percent"}) {
+      if (measured_needed && !v.was_given(key))
+        throw v.error(key, "missing: needed to derive the cohesive force (Eq. 14-16), or give cohesion_force_n");
+    }
+    if (v.was_given("bulk_density_kg_m3")) {
+      p.bulk_density = v.number("bulk_density_kg_m3");
+      if (p.bulk_density > p.true_density)
+        throw v.error("bulk_density_kg_m3",
+                      fmt::format("= {:g} is above true_density_kg_m3 = {:g}; allowed (0, {:g}] "
+                                  "kg/m^3 (a bulk cannot be denser than its particles)",
+                                  p.bulk_density, p.true_density, p.true_density));
+    }
+    if (v.was_given("cohesion_kpa")) p.cohesion = v.number("cohesion_kpa");
+    if (v.was_given("friction_angle_deg")) p.friction_angle = v.number("friction_angle_deg");
+    if (v.was_given("moisture_percent")) p.moisture = v.number("moisture_percent");
+    if (measured_needed) {
+      const double eps = porosity(p.bulk_density, p.true_density, p.moisture);
+      if (!(eps > 0.0 && eps < 1.0))
+        throw v.error("bulk_density_kg_m3",
+                      fmt::format("gives a porosity (Eq. 15) of {:.4g}, outside (0, 1)", eps));
+    }
+    c.coals.push_back(p);
+    c.coal_places.push_back(v.place);
+  }
+  // [contact.*]
+  c.particle_particle = r.contact(root, "particle_particle", false);
+  c.particle_wall = r.contact(root, "particle_wall", true);
+  if (const toml::node* cn = root.get("contact")) {
+    for (const auto& [k, node] : *cn->as_table()) {
+      const std::string key(k.str());
+      if (key != "particle_particle" && key != "particle_wall") {
+        const std::string hint = did_you_mean(key, {"particle_particle", "particle_wall"});
+        throw InputError(r.place(node), "contact." + key,
+                         "unknown section" + (hint.empty() ? std::string() : "; did you mean '" + hint + "'?"));
+      }
+    }
+  }
+  // [[wall]]
+  {
+    const auto ws = r.tables(root, "wall");
+    std::vector<std::string> types;
+    for (const auto& w : wall_types()) types.emplace_back(w.name);
+    for (std::size_t i = 0; i < ws.size(); ++i) {
+      const std::string sec = fmt::format("wall[{}]", i);
+      const toml::node* t = ws[i]->get("type");
+      if (!t || !t->is_string())
+        throw InputError(r.place(*ws[i]), sec + ".type",
+                         fmt::format("missing or not a string; choose one of: {}", fmt::join(types, ", ")));
+      const std::string type = t->value<std::string>().value();
+      const WallEntry* e = find_wall_type(type);
+      if (!e) {
+        const std::string hint = did_you_mean(type, types);
+        throw InputError(r.place(*t), sec + ".type",
+                         fmt::format("= \"{}\" is not a wall type; choose one of: {}{}", type,
+                                     fmt::join(types, ", "), hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+      }
+      WallSpec spec{type, r.read(*ws[i], e->fields(), sec, {"type"})};
+      e->make(spec.values);  // validates geometry now, so errors come before any output
+      c.walls.push_back(std::move(spec));
+    }
+  }
+  // [[particle]], [[lattice]]
+  {
+    const auto ps = r.tables(root, "particle");
+    for (std::size_t i = 0; i < ps.size(); ++i) {
+      const std::string sec = fmt::format("particle[{}]", i);
+      const ParamValues v = r.read(*ps[i], section("particle").fields, sec);
+      ParticleSpec p;
+      p.coal = coal_index(c, v, "coal");
+      p.x = v.vector("position");
+      p.v = v.vector("velocity");
+      p.omega = v.vector("angular_velocity");
+      p.diameter = v.was_given("diameter_mm") ? v.number("diameter_mm") : 0.0;
+      p.place = v.places.at("position");
+      p.key = sec;
+      c.particles.push_back(p);
+    }
+    const auto ls = r.tables(root, "lattice");
+    for (std::size_t i = 0; i < ls.size(); ++i) {
+      const std::string sec = fmt::format("lattice[{}]", i);
+      const ParamValues v = r.read(*ls[i], section("lattice").fields, sec);
+      LatticeSpec l;
+      l.coal = coal_index(c, v, "coal");
+      l.origin = v.vector("origin");
+      l.spacing = v.number("spacing");
+      l.v = v.vector("velocity");
+      const Vec3 n = v.vector("count");
+      for (double x : {n.x, n.y, n.z})
+        if (x < 1 || x > 1e4 || x != std::floor(x))
+          throw v.error("count", fmt::format("components must be integers in [1, 10000], got ({:g}, {:g}, {:g})", n.x, n.y, n.z));
+      l.nx = int(n.x), l.ny = int(n.y), l.nz = int(n.z);
+      if (double(l.nx) * l.ny * l.nz > 2e7) throw v.error("count", "more than 2e7 particles");
+      l.place = v.place;
+      l.key = sec;
+      c.lattices.push_back(l);
+    }
+  }
+  // [output]
+  {
+    const ParamValues v = r.read(single("output"), section("output").fields, "output");
+    c.output.every = long(v.number("every"));
+    for (double id : v.lists.at("ids")) c.output.ids.push_back(std::uint64_t(id));
+  }
+  return c;
+}
+
+Case parse(const std::string& text, const std::string& name) {
+  try {
+    const toml::table root = toml::parse(text, name);
+    return build(root, name);
+  } catch (const toml::parse_error& e) {
+    const auto& s = e.source();
+    throw InputError({name, int(s.begin.line), int(s.begin.column)}, "",
+                     std::string("TOML syntax error: ") + std::string(e.description()));
+  } catch (const std::invalid_argument& e) {
+    throw InputError({name, 0, 0}, "", e.what());
+  }
+}
+
+}  // namespace
+
+Case load_case_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError({path, 0, 0}, "", "cannot open the case file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse(ss.str(), path);
+}
+
+Case load_case_text(const std::string& text, const std::string& name) { return parse(text, name); }
+
+}  // namespace silodem::config

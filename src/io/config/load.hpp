@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+// TOML case file -> Case. Every key is checked for type, unit and range; unknown keys are refused
+// with a suggestion; errors are InputError with file:line:column.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "scenario/case.hpp"
+
+namespace silodem::config {
+
+Case load_case_file(const std::string& path);
+// `name` is used in error messages in place of a path.
+Case load_case_text(const std::string& text, const std::string& name);
+
+}  // namespace silodem::config

@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: MIT
+#include "io/config/schema.hpp"
+
+#include <algorithm>
+#include <fmt/format.h>
+#include <stdexcept>
+
+#include "core/constants.hpp"
+#include "engine/walls/wall.hpp"
+#include "model/contact/registry.hpp"
+
+namespace silodem::config {
+
+const std::vector<Section>& sections() {
+  using F = Field;
+  static const std::vector<Section> s = {
+      {"simulation",
+       "time stepping and global settings",
+       false,
+       {
+           F::number("end_time", "simulated time to run", "s").with_default(1.0).above(0),
+           F::number("time_step", "explicit time step; 0 = t_col,min / steps_per_collision", "s")
+               .with_default(0.0)
+               .at_least(0),
+           F::number("steps_per_collision",
+                     "N in dt = t_col,min / N (MFIX's DTSOLID_FACTOR default 50)")
+               .with_default(50)
+               .at_least(10)
+               .at_most(1e6),
+           F::vec3("gravity", "gravitational acceleration", "m/s^2"),
+           F::number("skin", "Verlet skin as a fraction of the smallest CG diameter")
+               .with_default(0.25)
+               .above(0)
+               .at_most(5),
+           F::integer("threads", "OpenMP threads; 0 = all cores").with_default(0).at_least(0).at_most(
+               1024),
+           F::integer("seed", "seed of every random choice").with_default(1).at_least(0).at_most(
+               9.0e15),
+       }},
+      {"coarse_graining",
+       "coarse-graining factor and scaling policies (PHYSICS.md 1)",
+       false,
+       {
+           F::number("k", "each simulated sphere stands for k^3 particles; k = 1 is plain DEM")
+               .with_default(1.0)
+               .at_least(1)
+               .at_most(100),
+           F::number("cohesion_exponent", "alpha in F_L,cg = k^alpha F_L (paper: 3; Rumpf: 2)")
+               .with_default(3.0)
+               .at_least(2)
+               .at_most(3),
+           F::text("restitution_policy",
+                   "e_cg: Eq. 11 (energy), Eq. 11 clamped to restitution_floor, or e unchanged",
+                   {"energy", "energy-clamped", "none"}, "none"),
+           F::number("restitution_floor", "e_min for energy-clamped")
+               .with_default(0.01)
+               .above(0)
+               .at_most(1),
+       }},
+      {"coal",
+       "a coal (or any granular material): measured properties (PHYSICS.md 4)",
+       true,
+       {
+           F::text("name", "name used by particles, lattices and reports", {}),
+           F::number("diameter_mm", "average particle diameter (the DEM size before k)", "mm",
+                     units::mm)
+               .needed()
+               .above(0)
+               .at_most(1e4),
+           F::number("sauter_diameter_mm", "Sauter mean diameter d_sv of Eq. 14 (default: diameter_mm)",
+                     "mm", units::mm)
+               .above(0)
+               .at_most(1e4),
+           F::number("true_density_kg_m3", "particle (true) density", "kg/m^3")
+               .needed()
+               .above(0)
+               .at_most(3e4),
+           F::number("bulk_density_kg_m3", "measured bulk density (needed for cohesion)", "kg/m^3")
+               .above(0)
+               .at_most(3e4),
+           F::number("cohesion_kpa", "cohesion C of the yield locus (Table 1 says N; it is kPa, E1)",
+                     "kPa", units::kPa)
+               .at_least(0)
+               .at_most(1e4),
+           F::number("friction_angle_deg", "internal friction angle", "deg", units::deg)
+               .above(0)
+               .below(90),
+           F::number("moisture_percent", "moisture content M", "%", units::percent)
+               .at_least(0)
+               .below(100),
+           F::number("heating_value_kcal_kg", "lower heating value (Eq. 17)", "kcal/kg")
+               .with_default(0.0)
+               .at_least(0)
+               .at_most(1e5),
+           F::number("cohesion_force_n", "F_L of one original particle, replacing Eq. 14", "N")
+               .at_least(0)
+               .at_most(1e6),
+       }},
+      {"particle",
+       "one particle placed explicitly",
+       true,
+       {
+           F::text("coal", "coal name", {}),
+           F::vec3("position", "centre", "m").needed(),
+           F::vec3("velocity", "initial velocity", "m/s"),
+           F::vec3("angular_velocity", "initial angular velocity", "rad/s"),
+           F::number("diameter_mm", "simulated diameter (default: the coal's CG diameter)", "mm",
+                     units::mm)
+               .above(0)
+               .at_most(1e5),
+       }},
+      {"lattice",
+       "particles on a simple cubic lattice",
+       true,
+       {
+           F::text("coal", "coal name", {}),
+           F::vec3("origin", "centre of the first particle", "m").needed(),
+           F::number("spacing", "centre-to-centre spacing", "m").needed().above(0),
+           F::vec3("count", "particles along x, y, z").needed(),
+           F::vec3("velocity", "initial velocity", "m/s"),
+       }},
+      {"output",
+       "what `silodem run` writes",
+       false,
+       {
+           F::integer("every", "steps between rows of trajectory.csv; 0 = initial and final state")
+               .with_default(0)
+               .at_least(0)
+               .at_most(1e12),
+           F::integer_list("ids", "particle ids to write; default all"),
+       }},
+  };
+  return s;
+}
+
+const Section& section(const std::string& name) {
+  for (const auto& s : sections())
+    if (s.name == name) return s;
+  throw std::logic_error("no schema section " + name);
+}
+
+std::vector<std::string> top_level_keys() {
+  return {"title", "simulation", "coarse_graining", "coal", "contact", "wall", "particle",
+          "lattice", "output"};
+}
+
+static std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] != b[j - 1])});
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_d = std::max<std::size_t>(3, word.size() / 3) + 1;
+  for (const auto& c : candidates) {
+    const std::size_t d = edit_distance(word, c);
+    if (d < best_d) best_d = d, best = c;
+  }
+  return best;
+}
+
+static std::string field_row(const Field& f) {
+  std::string type;
+  switch (f.kind) {
+    case FieldKind::Number: type = "number"; break;
+    case FieldKind::Integer: type = "integer"; break;
+    case FieldKind::Bool: type = "bool"; break;
+    case FieldKind::String: type = "string"; break;
+    case FieldKind::Vec3: type = "[x, y, z]"; break;
+    case FieldKind::IntegerList: type = "[integers]"; break;
+  }
+  std::string def;
+  if (f.required)
+    def = "**required**";
+  else if (f.kind == FieldKind::String)
+    def = f.default_string.empty() ? "-" : "`\"" + f.default_string + "\"`";
+  else if (f.kind == FieldKind::Bool)
+    def = f.default_number && *f.default_number != 0 ? "`true`" : "`false`";
+  else if (f.default_number)
+    def = fmt::format("`{:g}`", *f.default_number);
+  else
+    def = "-";
+  std::string range;
+  if (!f.choices.empty()) {
+    for (const auto& c : f.choices) range += (range.empty() ? "" : ", ") + ("`" + c + "`");
+  } else if (f.kind == FieldKind::Number || f.kind == FieldKind::Integer) {
+    range = f.range_text();
+  }
+  return fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", f.key, type, f.unit.empty() ? "-" : f.unit,
+                     def, range.empty() ? "-" : range, f.doc);
+}
+
+static const char* kHeader = "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
+
+std::string markdown() {
+  std::string md =
+      "# Case file reference\n\n"
+      "Generated by `silodem config-docs` from the schema in src/io/config/schema.cpp and the law\n"
+      "and wall tables; do not edit by hand. Units are part of the key name where they are not SI.\n"
+      "Unknown keys are refused with a suggestion; every error names file:line:column.\n\n"
+      "Top-level keys: `" +
+      fmt::format("{}", fmt::join(top_level_keys(), "`, `")) + "` (`title` is a string).\n";
+  for (const auto& s : sections()) {
+    md += fmt::format("\n## {}{}{}\n\n{}\n\n", s.array ? "[[" : "[", s.name, s.array ? "]]" : "]", s.doc);
+    md += kHeader;
+    for (const auto& f : s.fields) md += field_row(f);
+  }
+  md +=
+      "\n## [contact.particle_particle] and [contact.particle_wall]\n\n"
+      "Four slots, each an inline table `{ law = \"...\", ... }`: `normal` (required), "
+      "`tangential`, `rolling`, `cohesion` (default `none`). Laws and their keys:\n";
+  for (Slot slot : {Slot::Normal, Slot::Tangential, Slot::Rolling, Slot::Cohesion}) {
+    for (const auto& e : contact_laws()) {
+      if (e.slot != slot) continue;
+      md += fmt::format("\n### {} = \"{}\"\n\n{}\n\n", slot_name(slot), e.name, e.summary);
+      auto pp = e.fields(false), pw = e.fields(true);
+      if (pp.empty() && pw.empty()) {
+        md += "No parameters.\n";
+        continue;
+      }
+      md += kHeader;
+      for (const auto& f : pp) md += field_row(f);
+      for (const auto& f : pw)
+        if (std::none_of(pp.begin(), pp.end(), [&](const Field& g) { return g.key == f.key; }))
+          md += field_row(f).replace(0, 1, "| (particle_wall only) ");
+    }
+  }
+  md += "\n## [[wall]]\n\n`type` selects the shape:\n";
+  for (const auto& w : wall_types()) {
+    md += fmt::format("\n### type = \"{}\"\n\n{}\n\n", w.name, w.summary);
+    md += kHeader;
+    for (const auto& f : w.fields()) md += field_row(f);
+  }
+  return md;
+}
+
+}  // namespace silodem::config

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+#include "io/csv.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fmt/format.h>
+#include <stdexcept>
+
+namespace silodem {
+
+CsvWriter::CsvWriter(std::string path, const std::vector<std::string>& columns)
+    : path_(std::move(path)), ncol_(columns.size()) {
+  f_ = std::fopen((path_ + ".partial").c_str(), "wb");
+  if (!f_) throw std::runtime_error(fmt::format("cannot write {}.partial: {}", path_, std::strerror(errno)));
+  fmt::print(f_, "{}\n", fmt::join(columns, ","));
+}
+
+CsvWriter::~CsvWriter() {
+  if (f_) std::fclose(f_);  // left as .partial: the run did not finish
+}
+
+void CsvWriter::row(const std::vector<double>& values) {
+  if (values.size() != ncol_) throw std::logic_error("CSV row has the wrong number of columns");
+  fmt::print(f_, "{}\n", fmt::join(values, ","));
+}
+
+void CsvWriter::finish() {
+  if (!f_) return;
+  if (std::fflush(f_) != 0 || std::fclose(f_) != 0)
+    throw std::runtime_error("cannot finish " + path_ + ": " + std::strerror(errno));
+  f_ = nullptr;
+  std::filesystem::rename(path_ + ".partial", path_);
+}
+
+}  // namespace silodem

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// CSV output written to "<name>.partial" and renamed when complete, so an interrupted run never
+// leaves a file that looks finished.
+#pragma once
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace silodem {
+
+class CsvWriter {
+ public:
+  CsvWriter(std::string path, const std::vector<std::string>& columns);
+  ~CsvWriter();
+  CsvWriter(const CsvWriter&) = delete;
+  CsvWriter& operator=(const CsvWriter&) = delete;
+  // Appends one row; numbers with 17 significant digits (round-trip exact).
+  void row(const std::vector<double>& values);
+  // Flushes, closes and renames to the final name.
+  void finish();
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::FILE* f_ = nullptr;
+  std::size_t ncol_ = 0;
+};
+
+}  // namespace silodem

@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+#include "io/report_json.hpp"
+
+#include <fmt/format.h>
+#include <sstream>
+#include <toml++/toml.h>
+
+namespace silodem {
+
+std::string case_report_json(const Case& c, const CaseReport& r) {
+  toml::array materials;
+  for (const auto& m : r.coals) {
+    materials.push_back(toml::table{
+        {"name", m.name},
+        {"porosity", m.measured.porosity},
+        {"tensile_strength_pa", m.measured.tensile_strength},
+        {"cohesion_force_n", m.measured.cohesion_force},
+        {"cohesion_force_cg_n", m.cohesion_cg},
+        {"cg_diameter_m", m.cg_diameter},
+        {"cg_mass_kg", m.cg_mass},
+        {"particle_mass_kg", m.measured.particle_mass},
+        {"bond_number", m.measured.bond_number},
+        {"bond_number_cg", m.bond_number_cg},
+        {"restitution_input", c.particle_particle.normal.values.number("restitution")},
+        {"restitution_cg", m.restitution.value},
+        {"restitution_policy", restitution_policy_name(c.cg.restitution_policy)},
+        {"restitution_clamped", m.restitution.clamped},
+        {"damping_normal", m.damping_normal},
+        {"collision_time_s", m.collision_time},
+        {"wall_damping_normal", m.wall_damping_normal},
+        {"wall_collision_time_s", m.wall_collision_time},
+    });
+  }
+  toml::array warnings;
+  for (const auto& w : r.warnings) warnings.push_back(w);
+  toml::table root{
+      {"case", c.path},
+      {"materials", std::move(materials)},
+      {"k", r.k},
+      {"cohesion_exponent", c.cg.cohesion_exponent},
+      {"collision_time_min_s", r.collision_time_min},
+      {"time_step_s", r.time_step},
+      {"steps_per_collision", r.collision_time_min / r.time_step},
+      {"warnings", std::move(warnings)},
+  };
+  std::ostringstream os;
+  os << toml::json_formatter{root} << "\n";
+  return os.str();
+}
+
+std::string case_report_text(const Case& c, const CaseReport& r) {
+  std::string s = fmt::format("case {}{}\n", c.path, c.title.empty() ? "" : " - " + c.title);
+  s += fmt::format("coarse graining k = {:g}, cohesion exponent {:g}, restitution policy {}\n", r.k,
+                   c.cg.cohesion_exponent, restitution_policy_name(c.cg.restitution_policy));
+  for (const auto& m : r.coals) {
+    s += fmt::format("coal {}\n", m.name);
+    s += fmt::format("  porosity (Eq. 15)            {:.4f}\n", m.measured.porosity);
+    s += fmt::format("  tensile strength (Eq. 16)    {:.1f} Pa\n", m.measured.tensile_strength);
+    s += fmt::format("  F_L (Eq. 14)                 {:.4e} N   Bond number {:.2f}\n",
+                     m.measured.cohesion_force, m.measured.bond_number);
+    s += fmt::format("  F_L,cg (Eq. 13)              {:.4e} N   Bond number {:.2f}\n", m.cohesion_cg,
+                     m.bond_number_cg);
+    s += fmt::format("  CG diameter / mass           {:.4g} mm / {:.4e} kg\n", m.cg_diameter * 1e3,
+                     m.cg_mass);
+    s += fmt::format("  e_cg                         {:.4g}{}\n", m.restitution.value,
+                     m.restitution.clamped ? " (clamped)" : "");
+    s += fmt::format("  eta_n pair / wall            {:.4g} / {:.4g} N s/m\n", m.damping_normal,
+                     m.wall_damping_normal);
+    s += fmt::format("  t_col pair / wall            {:.4e} / {:.4e} s\n", m.collision_time,
+                     m.wall_collision_time);
+  }
+  s += fmt::format("shortest collision t_col {:.4e} s; time step {:.4e} s; t_col / dt = {:.1f}\n",
+                   r.collision_time_min, r.time_step, r.collision_time_min / r.time_step);
+  for (const auto& w : r.warnings) s += "warning: " + w + "\n";
+  return s;
+}
+
+}  // namespace silodem

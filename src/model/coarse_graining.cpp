@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: MIT
+#include "model/coarse_graining.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <stdexcept>
+
+#include "core/constants.hpp"
+
+namespace silodem {
+
+RestitutionPolicy restitution_policy_from_name(const std::string& name) {
+  if (name == "energy") return RestitutionPolicy::Energy;
+  if (name == "energy-clamped") return RestitutionPolicy::EnergyClamped;
+  if (name == "none") return RestitutionPolicy::None;
+  throw std::invalid_argument("unknown restitution policy '" + name + "'");
+}
+
+const char* restitution_policy_name(RestitutionPolicy p) {
+  switch (p) {
+    case RestitutionPolicy::Energy: return "energy";
+    case RestitutionPolicy::EnergyClamped: return "energy-clamped";
+    case RestitutionPolicy::None: return "none";
+  }
+  return "?";
+}
+
+double CoarseGraining::cohesion_force(double f_l) const {
+  return std::pow(k, cohesion_exponent) * f_l;  // Eq. 13 (alpha = 3 in the paper)
+}
+
+RestitutionCg restitution_cg(double e, const CoarseGraining& cg) {
+  RestitutionCg r;
+  r.argument = 1.0 + (e * e - 1.0) * cg.k;  // radicand of Eq. 11
+  switch (cg.restitution_policy) {
+    case RestitutionPolicy::None:
+      r.value = e;
+      return r;
+    case RestitutionPolicy::Energy:
+      if (r.argument < 0.0) {
+        r.defined = false;
+        r.value = 0.0;
+        r.warning = fmt::format(
+            "Eq. 11 has no real value for e = {:g} at k = {:g} (1 + (e^2 - 1) k = {:.4g} < 0; "
+            "defined only for k <= {:.4g}); choose restitution_policy = \"energy-clamped\" or "
+            "\"none\"",
+            e, cg.k, r.argument, 1.0 / (1.0 - e * e));
+        return r;
+      }
+      r.value = std::sqrt(r.argument);
+      return r;
+    case RestitutionPolicy::EnergyClamped: {
+      const double raw = r.argument > 0.0 ? std::sqrt(r.argument) : 0.0;
+      r.defined = r.argument >= 0.0;
+      if (raw < cg.restitution_floor) {
+        r.clamped = true;
+        r.value = cg.restitution_floor;
+        r.warning = fmt::format(
+            "Eq. 11 gives {} for e = {:g} at k = {:g} (1 + (e^2 - 1) k = {:.4g}); clamped to the "
+            "floor e_min = {:g}",
+            r.defined ? fmt::format("{:.4g}", raw) : std::string("no real value"), e, cg.k,
+            r.argument, cg.restitution_floor);
+      } else {
+        r.value = raw;
+      }
+      return r;
+    }
+  }
+  return r;
+}
+
+double damping_ratio(double e) {
+  const double l = std::log(e);
+  return std::fabs(l) / std::sqrt(kPi * kPi + l * l);
+}
+
+double normal_damping(double k_n, double m_eff, double e) {
+  return 2.0 * damping_ratio(e) * std::sqrt(m_eff * k_n);
+}
+
+double collision_time(double k_n, double m_eff, double e) {
+  const double eta = normal_damping(k_n, m_eff, e);
+  return kPi / std::sqrt(k_n / m_eff - eta * eta / (4.0 * m_eff * m_eff));
+}
+
+double effective_mass(double m_i, double m_j) {
+  return m_j > 0.0 ? m_i * m_j / (m_i + m_j) : m_i;
+}
+
+}  // namespace silodem

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Moisture cohesion acting only while the surfaces overlap (PHYSICS.md 3):
+//   F_coh = F_L,cg  for delta_n > 0, else 0.
+// The separation work is F^2 / (2 k_n), so this law gets stickier as the stiffness drops
+// (VERIFICATION.md 1.7); a colliding pair is captured below v_crit = f(e) F / sqrt(k_n m_eff).
+#include "model/contact/cohesion_common.hpp"
+
+namespace silodem {
+namespace {
+
+double kernel(const CohesionParams& p, const ContactGeometry& g) {
+  return g.overlap > 0.0 ? p.force : 0.0;
+}
+std::vector<Field> fields(bool wall) { return cohesion_common_fields(wall); }
+void configure(const ParamValues& v, const LawContext& ctx, ContactLaw& law) {
+  law.cp = CohesionParams{};
+  law.cp.force = cohesion_pair_force(v, ctx);
+  law.cohesion = &kernel;
+}
+
+}  // namespace
+
+LawEntry cohesion_overlap_only_entry() {
+  return {"overlap-only", Slot::Cohesion, "F_L,cg while overlapping (Eq. 13-14)", &fields,
+          &configure};
+}
+
+}  // namespace silodem

@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: MIT
+#include "scenario/setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "core/constants.hpp"
+#include "engine/neighbor/cell_grid.hpp"
+
+namespace silodem {
+namespace {
+
+struct Body {
+  int coal;
+  Vec3 x, v, omega;
+  double diameter;
+  SourcePlace place;
+  std::string key;
+};
+
+std::vector<Body> bodies_of(const Case& c) {
+  std::vector<Body> out;
+  for (const auto& p : c.particles) {
+    const double d = p.diameter > 0 ? p.diameter : c.cg.diameter(c.coals[p.coal].diameter);
+    out.push_back({p.coal, p.x, p.v, p.omega, d, p.place, p.key});
+  }
+  for (const auto& l : c.lattices) {
+    const double d = c.cg.diameter(c.coals[l.coal].diameter);
+    for (int iz = 0; iz < l.nz; ++iz)
+      for (int iy = 0; iy < l.ny; ++iy)
+        for (int ix = 0; ix < l.nx; ++ix)
+          out.push_back({l.coal, l.origin + Vec3{ix * l.spacing, iy * l.spacing, iz * l.spacing},
+                         l.v, Vec3{}, d, l.place, fmt::format("{}[{},{},{}]", l.key, ix, iy, iz)});
+  }
+  return out;
+}
+
+}  // namespace
+
+CaseReport derive_case(const Case& c, ContactModel* model_out) {
+  CaseReport r;
+  r.k = c.cg.k;
+  std::vector<double> cohesion_cg;
+  for (const auto& coal : c.coals) {
+    CoalReport cr;
+    cr.name = coal.name;
+    cr.measured = derive(coal);
+    cr.cg_diameter = c.cg.diameter(coal.diameter);
+    cr.cg_mass = c.cg.mass(cr.measured.particle_mass);
+    cr.cohesion_cg = c.cg.cohesion_force(cr.measured.cohesion_force);
+    cr.bond_number_cg = cr.cohesion_cg / (cr.cg_mass * kGravity);
+    cohesion_cg.push_back(cr.cohesion_cg);
+    r.coals.push_back(cr);
+  }
+  ContactModel model =
+      ContactModel::build(c.particle_particle, c.particle_wall, cohesion_cg, c.cg, &r.warnings);
+
+  // Masses present: the coals' CG particles and any explicitly sized particle.
+  std::vector<double> min_mass(c.coals.size(), 0.0);
+  for (std::size_t a = 0; a < c.coals.size(); ++a) min_mass[a] = r.coals[a].cg_mass;
+  for (const auto& p : c.particles)
+    if (p.diameter > 0)
+      min_mass[p.coal] = std::min(min_mass[p.coal], sphere_mass(p.diameter, c.coals[p.coal].true_density));
+
+  r.collision_time_min = 1e300;
+  for (std::size_t a = 0; a < c.coals.size(); ++a) {
+    auto& cr = r.coals[a];
+    const NormalParams& np = model.pair(int(a), int(a)).np;
+    cr.restitution = restitution_cg(
+        c.particle_particle.normal.values.number("restitution"), c.cg);
+    cr.restitution.value = np.restitution;
+    const double m_eff = effective_mass(cr.cg_mass, cr.cg_mass);
+    cr.damping_normal = 2.0 * np.damping_ratio * std::sqrt(m_eff * np.stiffness);
+    cr.collision_time = model.pair_collision_time(int(a), int(a), cr.cg_mass, cr.cg_mass);
+    const NormalParams& wp = model.wall(int(a)).np;
+    cr.wall_damping_normal = 2.0 * wp.damping_ratio * std::sqrt(cr.cg_mass * wp.stiffness);
+    cr.wall_collision_time = model.wall_collision_time(int(a), cr.cg_mass);
+    for (std::size_t b = 0; b < c.coals.size(); ++b)
+      r.collision_time_min = std::min(
+          r.collision_time_min, model.pair_collision_time(int(a), int(b), min_mass[a], min_mass[b]));
+    r.collision_time_min =
+        std::min(r.collision_time_min, model.wall_collision_time(int(a), min_mass[a]));
+  }
+
+  if (c.time.time_step > 0.0) {
+    r.time_step = c.time.time_step;
+    if (r.time_step > r.collision_time_min / 10.0)
+      throw InputError(c.time.time_step_place, "simulation.time_step",
+                       fmt::format("{:.4g} s is above t_col / 10 = {:.4g} s (t_col = {:.4g} s, the "
+                                   "shortest collision); allowed range (0, {:.4g}] s",
+                                   r.time_step, r.collision_time_min / 10.0, r.collision_time_min,
+                                   r.collision_time_min / 10.0));
+  } else {
+    r.time_step = r.collision_time_min / c.time.steps_per_collision;
+  }
+
+  if (model_out) *model_out = std::move(model);
+  return r;
+}
+
+std::unique_ptr<Simulation> build_simulation(const Case& c, const CaseReport& report,
+                                             ContactModel model, int threads_override) {
+  SimulationSettings s;
+  s.dt = report.time_step;
+  s.gravity = c.time.gravity;
+  double d_min = 1e300;
+  for (const auto& cr : report.coals) d_min = std::min(d_min, cr.cg_diameter);
+  std::vector<Body> bodies = bodies_of(c);
+  for (const auto& b : bodies) d_min = std::min(d_min, b.diameter);
+  s.skin = c.time.skin * d_min;
+  s.threads = threads_override > 0 ? threads_override : c.time.threads;
+  auto sim = std::make_unique<Simulation>(std::move(model), s);
+
+  for (const auto& w : c.walls) {
+    const WallEntry* e = find_wall_type(w.type);
+    for (auto& surface : e->make(w.values)) sim->add_wall(std::move(surface));
+  }
+
+  // Refuse overlapping placements (a cell grid keeps this linear in the particle count).
+  std::vector<Vec3> xs;
+  double d_max = 0.0;
+  for (const auto& b : bodies) xs.push_back(b.x), d_max = std::max(d_max, b.diameter);
+  CellGrid grid;
+  grid.build(xs, std::max(d_max, 1e-12), 8 * xs.size() + 64);
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const auto cell = grid.cell_of(bodies[i].x);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int cx = cell[0] + dx, cy = cell[1] + dy, cz = cell[2] + dz;
+          const auto& dims = grid.dims();
+          if (cx < 0 || cy < 0 || cz < 0 || cx >= dims[0] || cy >= dims[1] || cz >= dims[2])
+            continue;
+          const int ci = grid.cell_index(cx, cy, cz);
+          for (int k = grid.start()[ci]; k < grid.start()[ci + 1]; ++k) {
+            const std::size_t j = std::size_t(grid.order()[k]);
+            if (j >= i) continue;
+            const double dist = norm(bodies[i].x - bodies[j].x);
+            const double contact = 0.5 * (bodies[i].diameter + bodies[j].diameter);
+            if (dist < contact * (1.0 - 1e-9))
+              throw InputError(bodies[i].place, bodies[i].key + ".position",
+                               fmt::format("overlaps {} (centre distance {:.6g} m < sum of radii "
+                                           "{:.6g} m); placed particles must not overlap",
+                                           bodies[j].key, dist, contact));
+          }
+        }
+  }
+  auto& p = sim->particles();
+  for (const auto& b : bodies) {
+    const double m = sphere_mass(b.diameter, c.coals[b.coal].true_density);
+    p.add(b.x, b.v, b.omega, 0.5 * b.diameter, m, b.coal);
+  }
+  return sim;
+}
+
+}  // namespace silodem

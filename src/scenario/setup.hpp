@@ -1,0 +1,41 @@
+// SPDX-License-Identifier: MIT
+// From a Case to the derived numbers (what `check` prints) and to a ready Simulation.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/simulation.hpp"
+#include "scenario/case.hpp"
+
+namespace silodem {
+
+struct CoalReport {
+  std::string name;
+  CoalDerived measured;        // porosity, sigma_t, F_L, Bond number of the original particle
+  double cg_diameter = 0.0;    // m
+  double cg_mass = 0.0;        // kg
+  double cohesion_cg = 0.0;    // F_L,cg (N)
+  double bond_number_cg = 0.0; // F_L,cg / (m_cg g)
+  RestitutionCg restitution;   // e_cg and how it came about (particle-particle law)
+  double damping_normal = 0.0; // eta_n of a pair of two such CG particles (N s/m)
+  double collision_time = 0.0; // t_col of that pair (s)
+  double wall_damping_normal = 0.0, wall_collision_time = 0.0;
+};
+
+struct CaseReport {
+  std::vector<CoalReport> coals;
+  double k = 1.0;
+  double collision_time_min = 0.0;  // smallest t_col over all pair kinds and sizes present
+  double time_step = 0.0;
+  std::vector<std::string> warnings;
+};
+
+// Derives every number and checks the time step (refuses dt > t_col / 10).
+CaseReport derive_case(const Case& c, ContactModel* model_out = nullptr);
+
+// Builds the simulation: walls, placed and lattice particles (refusing overlaps).
+std::unique_ptr<Simulation> build_simulation(const Case& c, const CaseReport& report,
+                                             ContactModel model, int threads_override = 0);
+
+}  // namespace silodem
