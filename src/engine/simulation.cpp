@@ -30,6 +30,7 @@ BodyState body(const ParticleStore& p, std::size_t i) {
 Simulation::Simulation(ContactModel model, SimulationSettings settings)
     : model_(std::move(model)), s_(settings) {
   s_.threads = thread_count(s_.threads);
+  list_.threads = s_.threads;
 }
 
 void Simulation::add_wall(std::unique_ptr<Wall> w) {
@@ -60,18 +61,27 @@ void Simulation::step() {
   run_hooks(Phase::StepBegin);
   const double dt = s_.dt, half = 0.5 * dt;
   const std::size_t n = p_.size();
-#pragma omp parallel for schedule(static) num_threads(s_.threads)
+  v_half_.resize(n);
+  w_half_.resize(n);
+  // Velocity Verlet. The dashpots need the velocity at the end of the step, which VV only knows
+  // after the forces: they see the predictor v_half + a_old dt/2 (error O(dt^2)) instead of the
+  // half-step velocity (error O(dt), 13% in the restitution at e = 0.1 and dt = t_col/50).
+#pragma omp parallel for schedule(static) num_threads(s_.threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
-    p_.v[i] += p_.f[i] * (half * p_.inv_mass[i]);
-    p_.omega[i] += p_.t[i] * (half * p_.inv_inertia[i]);
-    p_.x[i] += p_.v[i] * dt;
+    const Vec3 dv = p_.f[i] * (half * p_.inv_mass[i]);
+    const Vec3 dw = p_.t[i] * (half * p_.inv_inertia[i]);
+    v_half_[i] = p_.v[i] + dv;
+    w_half_[i] = p_.omega[i] + dw;
+    p_.x[i] += v_half_[i] * dt;
+    p_.v[i] = v_half_[i] + dv;
+    p_.omega[i] = w_half_[i] + dw;
   }
   update_neighbors();
   compute_forces();
-#pragma omp parallel for schedule(static) num_threads(s_.threads)
+#pragma omp parallel for schedule(static) num_threads(s_.threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
-    p_.v[i] += p_.f[i] * (half * p_.inv_mass[i]);
-    p_.omega[i] += p_.t[i] * (half * p_.inv_inertia[i]);
+    p_.v[i] = v_half_[i] + p_.f[i] * (half * p_.inv_mass[i]);
+    p_.omega[i] = w_half_[i] + p_.t[i] * (half * p_.inv_inertia[i]);
   }
   time_ += dt;
   ++steps_;
@@ -95,10 +105,13 @@ void Simulation::compute_forces() {
     f_buf_.assign(nt, {});
     t_buf_.assign(nt, {});
   }
+  int team = 1;
 #pragma omp parallel num_threads(nt)
   {
 #ifdef _OPENMP
     const int tid = omp_get_thread_num();
+#pragma omp single
+    team = omp_get_num_threads();
 #else
     const int tid = 0;
 #endif
@@ -154,7 +167,7 @@ void Simulation::compute_forces() {
     for (std::size_t i = 0; i < n; ++i) {
       Vec3 f = s_.gravity * p_.mass[i] + p_.f_ext[i];
       Vec3 t;
-      for (int k = 0; k < nt; ++k) {
+      for (int k = 0; k < team; ++k) {
         f += f_buf_[k][i];
         t += t_buf_[k][i];
       }

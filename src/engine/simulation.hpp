@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Owns the particles, walls, neighbour list with contact history and the contact model, and
 // advances them in time with velocity Verlet:
-//   hooks(begin) -> v += F/m dt/2 -> x += v dt -> neighbours -> forces -> v += F/m dt/2 -> hooks(end)
+//   hooks(begin) -> v_half = v + F/m dt/2 -> x += v_half dt -> neighbours
+//   -> forces (dashpots see the predicted v_half + F_old/m dt/2) -> v = v_half + F/m dt/2 -> hooks(end)
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -73,6 +74,7 @@ class Simulation {
   VerletList list_;
   std::vector<Hook> hooks_;
   std::vector<std::vector<Vec3>> f_buf_, t_buf_;  // per-thread force/torque buffers
+  std::vector<Vec3> v_half_, w_half_;             // half-step velocities of velocity Verlet
   double time_ = 0.0;
   long steps_ = 0;
   bool initialized_ = false;

@@ -73,7 +73,7 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
           }
         }
   };
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
     int c = 0;
     visit(i, [&](int) { ++c; });
@@ -82,7 +82,7 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   offset.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) offset[i + 1] = offset[i] + count[i + 1];
   partner.assign(offset[n], 0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
     std::vector<int> mine;
     visit(i, [&](int j) { mine.push_back(j); });
@@ -93,7 +93,7 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   // Wall candidates.
   std::vector<int> wcount(n + 1, 0);
   const double w_skin = skin;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
     WallHit hit;
     const double limit = p.radius[i] * (1.0 + 2.0 * reach_over_d) + w_skin;
@@ -104,7 +104,7 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   wall_offset.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) wall_offset[i + 1] = wall_offset[i] + wcount[i + 1];
   wall.assign(wall_offset[n], 0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
     WallHit hit;
     const double limit = p.radius[i] * (1.0 + 2.0 * reach_over_d) + w_skin;
@@ -123,7 +123,7 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
       });
       return (it != v.end() && it->a == a && it->b == b) ? &*it : nullptr;
     };
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
     for (std::size_t i = 0; i < n; ++i) {
       for (int e = offset[i]; e < offset[i + 1]; ++e) {
         const std::uint64_t a = p.id[i], b = p.id[partner[e]];
@@ -147,7 +147,7 @@ bool VerletList::needs_rebuild(const ParticleStore& p) const {
   const double limit2 = 0.25 * skin * skin;
   const std::size_t n = p.size();
   int moved = 0;
-#pragma omp parallel for schedule(static) reduction(| : moved)
+#pragma omp parallel for schedule(static) reduction(| : moved) num_threads(threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) moved |= norm2(p.x[i] - x_at_build_[i]) > limit2 ? 1 : 0;
   return moved != 0;
 }

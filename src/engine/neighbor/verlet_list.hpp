@@ -29,6 +29,7 @@ class VerletList {
   std::vector<ContactState> wall_state;
   long builds = 0;
   double skin = 0.0;
+  int threads = 1;  // OpenMP threads for building and checking
 
  private:
   struct Saved {

@@ -38,6 +38,8 @@ struct Reader {
   static std::string show(const toml::node& n) {
     std::ostringstream os;
     if (n.is_table()) return "a table";
+    if (n.is_integer()) return fmt::format("{}", n.value<std::int64_t>().value());
+    if (n.is_floating_point()) return fmt::format("{}", n.value<double>().value());
     if (n.is_array()) {
       os << *n.as_array();
       return os.str();

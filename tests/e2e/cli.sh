@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# End-to-end tests of the command line: check --json, run, and bad input (exit code 2, one line,
+# no output directory left behind).
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail=0
+say() { printf '%s\n' "$*"; }
+bad() { say "FAIL: $*"; fail=1; }
+
+# 1. check --json on the default case: the fields the issue names, as numbers.
+"$bin" check "$src/cases/default.toml" --json > "$work/check.json" || bad "check --json exited $?"
+python_ok=$(command -v python3 || true)
+if [ -n "$python_ok" ]; then
+  python3 - "$work/check.json" <<'PY' || fail=1
+import json, sys
+d = json.load(open(sys.argv[1]))
+need = ["name", "porosity", "tensile_strength_pa", "cohesion_force_n", "cohesion_force_cg_n",
+        "cg_diameter_m", "cg_mass_kg", "bond_number", "restitution_cg", "restitution_policy",
+        "damping_normal", "collision_time_s"]
+for m in d["materials"]:
+    missing = [k for k in need if k not in m]
+    assert not missing, f"missing {missing}"
+assert isinstance(d["warnings"], list)
+L = d["materials"][0]
+# T-U1/T-U2 through the CLI (VERIFICATION.md 1.1-1.2, k = 3)
+def near(a, b, tol): assert abs(a / b - 1) < tol, (a, b)
+near(L["porosity"], 0.5472, 1e-3)
+near(L["tensile_strength_pa"], 1016.1, 1e-3)
+near(L["cohesion_force_n"], 9.627e-3, 1e-3)
+near(L["cohesion_force_cg_n"], 0.2599, 1e-3)
+near(L["bond_number"], 54.49, 1e-3)
+near(L["cg_diameter_m"], 8.4e-3, 1e-9)
+near(d["materials"][1]["cohesion_force_cg_n"], 0.4171, 1e-3)
+near(d["k"], 3.0, 1e-12)
+near(d["time_step_s"], d["collision_time_min_s"] / 50, 1e-9)
+print("check --json ok")
+PY
+fi
+
+# 2. A tiny run writes the trajectory and a complete summary.
+cat > "$work/drop.toml" <<EOF2
+[simulation]
+end_time = 0.05
+[[coal]]
+name = "glass"
+diameter_mm = 10
+true_density_kg_m3 = 2500
+cohesion_force_n = 0
+[contact.particle_particle]
+normal = { law = "linear_spring_dashpot", stiffness = 1e5, restitution = 0.5 }
+[contact.particle_wall]
+normal = { law = "linear_spring_dashpot", stiffness = 1e5, restitution = 0.5 }
+[[particle]]
+coal = "glass"
+position = [0.0, 0.0, 1.0]
+[output]
+every = 10
+EOF2
+"$bin" run "$work/drop.toml" --out "$work/drop" > /dev/null 2>&1 || bad "run exited $?"
+[ -f "$work/drop/trajectory.csv" ] || bad "no trajectory.csv"
+[ -f "$work/drop/summary.json" ] && grep -q '"complete": true' "$work/drop/summary.json" || bad "summary not complete"
+# free fall: z(t) = 1 - g t^2 / 2 in the last row
+python3 - "$work/drop/trajectory.csv" <<'PY' || fail=1
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+t, z = float(rows[-1]["t_s"]), float(rows[-1]["z_m"])
+assert abs(z - (1 - 9.81 * t * t / 2)) < 1e-9, (t, z)
+assert abs(t - 0.05) < 1e-4, t
+PY
+# An existing non-empty directory is never overwritten.
+"$bin" run "$work/drop.toml" --out "$work/drop" > /dev/null 2> "$work/err.txt"
+[ $? -eq 2 ] || bad "existing out dir: expected exit 2"
+grep -q "not empty" "$work/err.txt" || bad "existing out dir: message"
+
+# 3. Bad input: exit 2, one line naming key and file:line, no output directory.
+base=$src/tests/data/base.toml
+try_bad() {  # name, sed expression, expected key, expected line
+  local name=$1 expr=$2 key=$3
+  sed "$expr" "$base" > "$work/$name.toml"
+  local line
+  line=$(grep -n -m1 "$4" "$work/$name.toml" | cut -d: -f1)
+  "$bin" run "$work/$name.toml" --out "$work/out_$name" > /dev/null 2> "$work/$name.err"
+  local code=$?
+  [ $code -eq 2 ] || bad "$name: exit code $code, expected 2"
+  [ "$(wc -l < "$work/$name.err")" -eq 1 ] || bad "$name: expected one line, got: $(cat "$work/$name.err")"
+  grep -q "$key" "$work/$name.err" || bad "$name: key $key not named: $(cat "$work/$name.err")"
+  grep -q "$name.toml:$line" "$work/$name.err" || bad "$name: line $line not named: $(cat "$work/$name.err")"
+  [ ! -e "$work/out_$name" ] || bad "$name: output directory left behind"
+}
+try_bad unknown 's/moisture_percent/moisture_pecent/' "did you mean 'moisture_percent'" moisture_pecent
+try_bad negative 's/diameter_mm = 2.8/diameter_mm = -2.8/' "coal\[0\].diameter_mm" "diameter_mm = -2.8"
+try_bad moisture 's/moisture_percent = 8.8/moisture_percent = 100/' "moisture_percent" "moisture_percent = 100"
+try_bad bulk 's/bulk_density_kg_m3 = 778/bulk_density_kg_m3 = 2000/' "bulk_density_kg_m3" "bulk_density_kg_m3 = 2000"
+try_bad kless 's/^k = 3/k = 0.9/' "coarse_graining.k" "^k = 0.9"
+try_bad overlap 's/position = \[0.02, 0.0, 0.01\]/position = [0.001, 0.0, 0.01]/' "particle\[1\].position" "position = \[0.001"
+try_bad missing 's/^true_density_kg_m3 = 1567$//' "true_density_kg_m3" '^\[\[coal\]\]'
+try_bad dt 's/^end_time = 0.01/end_time = 0.01\ntime_step = 1e-4/' "simulation.time_step" "time_step = 1e-4"
+
+[ $fail -eq 0 ] && say "e2e ok"
+exit $fail

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// T-P3 head-on particle-particle and T-P4 particle-wall collisions (VERIFICATION.md 4.2):
+// measured restitution and contact duration against e and t_col (Eq. 9-10 with E2, E3, E5);
+// with clipping, the Schwager & Poeschel (2007) value computed in closed form here.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "helpers.hpp"
+
+namespace silodem {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Outcome {
+  double restitution, duration, t_col, max_overlap;
+};
+
+// Head-on: particle 0 (mass m0) moves at +v towards particle 1 (mass m0 * ratio) at rest, or
+// towards a wall when ratio == 0. No gravity. Crossing times interpolated linearly.
+Outcome collide(double e, double ratio, bool clip, bool force_zero_ends, double dt_factor = 50) {
+  const double kn = 1e4, r = 5e-3, rho = 1500, v = 0.5;
+  const double m0 = test::sphere_mass_of(2 * r, rho);
+  test::Laws l;
+  l.normal_p = {{"stiffness", kn}, {"restitution", e}, {"clip_attractive", clip ? 1.0 : 0.0}};
+  ContactModel model = test::model_of(l);
+  const bool wall = ratio == 0.0;
+  const double m1 = wall ? 0.0 : m0 * ratio;
+  const double t_col = wall ? model.wall_collision_time(0, m0) : model.pair_collision_time(0, 0, m0, m1);
+  SimulationSettings s;
+  s.dt = t_col / dt_factor;
+  s.gravity = {};
+  s.threads = 1;
+  Simulation sim(std::move(model), s);
+  auto& p = sim.particles();
+  const double gap = 0.1 * r;
+  if (wall) {
+    sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{-1, 0, 0}));
+    p.add({-r - gap, 0, 0}, {v, 0, 0}, {}, r, m0, 0);
+  } else {
+    p.add({-r - gap, 0, 0}, {v, 0, 0}, {}, r, m0, 0);
+    // Partner with the same density: radius from its mass.
+    const double r1 = r * std::cbrt(ratio);
+    p.add({r1, 0, 0}, {}, {}, r1, m1, 0);
+  }
+  auto overlap = [&]() {
+    if (wall) return p.x[0].x + p.radius[0];
+    return p.radius[0] + p.radius[1] - (p.x[1].x - p.x[0].x);
+  };
+  auto rel_v = [&]() { return wall ? p.v[0].x : p.v[0].x - p.v[1].x; };
+  auto contact_force = [&]() { return std::fabs(p.f[0].x); };
+  const double v_in = rel_v();
+  double t_start = -1, t_end = -1, max_ov = 0, prev_ov = overlap(), prev_t = 0;
+  double prev_f = 0;
+  for (int k = 0; k < 1000000 && t_end < 0; ++k) {
+    sim.step();
+    const double ov = overlap(), t = sim.time(), f = contact_force();
+    max_ov = std::max(max_ov, ov);
+    if (t_start < 0 && ov > 0) t_start = prev_t + (t - prev_t) * (0 - prev_ov) / (ov - prev_ov);
+    if (t_start >= 0) {
+      if (force_zero_ends && f == 0.0 && prev_f > 0) {
+        t_end = t;  // clipped: the force vanishes before the overlap does
+      } else if (!force_zero_ends && ov <= 0 && prev_ov > 0) {
+        t_end = prev_t + (t - prev_t) * (0 - prev_ov) / (ov - prev_ov);
+      }
+    }
+    prev_ov = ov, prev_t = t, prev_f = f;
+  }
+  sim.run_steps(200);
+  const double v_out = rel_v();
+  return {-v_out / v_in, t_end - t_start, t_col, max_ov};
+}
+
+TEST(Collisions, TP3_HeadOnParticleParticle) {
+  for (double ratio : {1.0, 3.0}) {
+    for (double e : {0.1, 0.5, 0.9}) {
+      const Outcome o = collide(e, ratio, false, false);
+      EXPECT_NEAR(o.restitution / e, 1.0, 0.005) << "e = " << e << " ratio " << ratio;
+      EXPECT_NEAR(o.duration / o.t_col, 1.0, 0.02) << "e = " << e << " ratio " << ratio;
+    }
+  }
+}
+
+TEST(Collisions, TP3_UndampedMaximumOverlap) {
+  const Outcome o = collide(1.0, 1.0, false, false);
+  const double m = test::sphere_mass_of(1e-2, 1500);
+  EXPECT_NEAR(o.max_overlap / (0.5 * std::sqrt(0.5 * m / 1e4)), 1.0, 0.005);
+  EXPECT_NEAR(o.restitution, 1.0, 0.005);
+}
+
+TEST(Collisions, TP4_HeadOnParticleWall) {
+  for (double e : {0.1, 0.5, 0.9}) {
+    const Outcome o = collide(e, 0.0, false, false);
+    EXPECT_NEAR(o.restitution / e, 1.0, 0.005) << "e = " << e;
+    EXPECT_NEAR(o.duration / o.t_col, 1.0, 0.02) << "e = " << e;
+  }
+}
+
+TEST(Collisions, TP3_ClippingRaisesLowRestitution) {
+  // Damped oscillator delta = (v/w) exp(-b t) sin(w t): the force k delta + eta delta' vanishes at
+  // tan(w t*) = -2 b w / (w0^2 - 2 b^2); the rebound speed is -delta'(t*).
+  const double e = 0.1, l = std::log(e), zeta = -l / std::sqrt(kPi * kPi + l * l);
+  const double w0 = 1.0, b = zeta * w0, w = w0 * std::sqrt(1 - zeta * zeta);
+  const double wt = kPi - std::atan(2 * b * w / (w0 * w0 - 2 * b * b));
+  const double t_star = wt / w;
+  const double e_clip = -std::exp(-b * t_star) * (std::cos(wt) - b / w * std::sin(wt));
+  // After t* the force is zero and the overlap closes at the rebound speed e_clip.
+  const double overlap_star = std::exp(-b * t_star) * std::sin(wt) / w;
+  const double duration = (t_star + overlap_star / e_clip) / (kPi / w);
+  EXPECT_NEAR(e_clip, 0.252, 0.001);     // VERIFICATION.md T-P3
+  EXPECT_NEAR(duration, 0.90, 0.01);     // duration 0.90 t_col
+  for (double ratio : {1.0, 0.0}) {
+    // The clipped force has a kink at t*, which costs first-order accuracy: 3% at t_col/50.
+    const Outcome o = collide(e, ratio, true, false, 1000);
+    EXPECT_NEAR(o.restitution / e_clip, 1.0, 0.005) << "ratio " << ratio;
+    EXPECT_NEAR(o.duration / (duration * o.t_col), 1.0, 0.02) << "ratio " << ratio;
+  }
+}
+
+}  // namespace
+}  // namespace silodem

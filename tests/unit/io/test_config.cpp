@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: MIT
+// Case-file loading: hostile input gets one clear error naming key, value, allowed range and
+// file:line; the derived numbers through the loader; the time-step guard (T-U7).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "io/config/load.hpp"
+#include "io/config/schema.hpp"
+#include "scenario/setup.hpp"
+
+namespace silodem {
+namespace {
+
+std::string base() {
+  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/tests/data/base.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto pos = s.find(from);
+  if (pos == std::string::npos) throw std::logic_error("test setup: '" + from + "' not found");
+  return s.replace(pos, from.size(), to);
+}
+
+int line_of(const std::string& text, const std::string& needle) {
+  const auto pos = text.find(needle);
+  return 1 + int(std::count(text.begin(), text.begin() + long(pos), '\n'));
+}
+
+// Loads (and derives and builds, as `run` does) and returns the error message, or "".
+std::string error_of(const std::string& text) {
+  try {
+    const Case c = config::load_case_text(text, "case.toml");
+    ContactModel model;
+    const CaseReport r = derive_case(c, &model);
+    build_simulation(c, r, std::move(model));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void expect_error(const std::string& text, const std::string& needle_line,
+                  const std::vector<std::string>& parts) {
+  const std::string msg = error_of(text);
+  ASSERT_FALSE(msg.empty()) << "no error for a case with '" << needle_line << "'";
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
+  const std::string where = "case.toml:" + std::to_string(line_of(text, needle_line)) + ":";
+  EXPECT_NE(msg.find(where), std::string::npos) << "expected " << where << " in: " << msg;
+  for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "expected '" << p << "' in: " << msg;
+}
+
+TEST(Config, BaseCaseLoadsAndDerives) {
+  const Case c = config::load_case_text(base(), "case.toml");
+  ASSERT_EQ(c.coals.size(), 1u);
+  EXPECT_NEAR(c.coals[0].diameter, 2.8e-3, 1e-15);
+  EXPECT_NEAR(c.coals[0].cohesion, 670.0, 1e-9);
+  const CaseReport r = derive_case(c);
+  EXPECT_NEAR(r.coals[0].cohesion_cg / 0.2599, 1.0, 1e-3);
+  EXPECT_NEAR(r.coals[0].collision_time / 1.921e-4, 1.0, 1e-3);  // k_n = 1e5 row of 1.4
+  EXPECT_NEAR(r.time_step, r.collision_time_min / 50.0, 1e-18);
+}
+
+TEST(Config, UnknownKeyWithSuggestion) {
+  const std::string t = replace(base(), "moisture_percent = 8.8", "moisture_pecent = 8.8");
+  expect_error(t, "moisture_pecent", {"coal[0].moisture_pecent", "did you mean 'moisture_percent'"});
+}
+
+TEST(Config, UnknownSectionAndLaw) {
+  expect_error(replace(base(), "[simulation]", "[simulaton]"), "[simulaton]",
+               {"simulaton", "did you mean 'simulation'"});
+  const std::string t = replace(base(), "law = \"mfix\", friction = 0.6", "law = \"epsdd\", friction = 0.6");
+  expect_error(t, "epsdd", {"rolling.law", "epsdd", "did you mean 'epsd'"});
+}
+
+TEST(Config, MissingRequiredKey) {
+  const std::string t = replace(base(), "true_density_kg_m3 = 1567\n", "");
+  const std::string msg = error_of(t);
+  EXPECT_NE(msg.find("coal[0].true_density_kg_m3"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("missing required key"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("case.toml:" + std::to_string(line_of(base(), "[[coal]]"))), std::string::npos) << msg;
+}
+
+TEST(Config, NegativeDiameter) {
+  expect_error(replace(base(), "diameter_mm = 2.8", "diameter_mm = -2.8"), "diameter_mm = -2.8",
+               {"coal[0].diameter_mm", "-2.8", "(0, 10000]", "mm"});
+}
+
+TEST(Config, MoistureAtOrAbove100) {
+  expect_error(replace(base(), "moisture_percent = 8.8", "moisture_percent = 100"),
+               "moisture_percent = 100", {"moisture_percent", "= 100", "[0, 100)", "%"});
+}
+
+TEST(Config, BulkDensityAboveTrueDensity) {
+  expect_error(replace(base(), "bulk_density_kg_m3 = 778", "bulk_density_kg_m3 = 1600"),
+               "bulk_density_kg_m3 = 1600", {"bulk_density_kg_m3", "1600", "1567", "(0, 1567]"});
+}
+
+TEST(Config, KBelowOne) {
+  expect_error(replace(base(), "k = 3", "k = 0.5"), "k = 0.5", {"coarse_graining.k", "0.5", "[1, 100]"});
+}
+
+TEST(Config, WrongType) {
+  expect_error(replace(base(), "k = 3", "k = \"three\""), "k = \"three\"", {"coarse_graining.k", "must be a number"});
+}
+
+TEST(Config, OverlappingPlacedParticles) {
+  expect_error(replace(base(), "position = [0.02, 0.0, 0.01]", "position = [0.005, 0.0, 0.01]"),
+               "position = [0.005", {"particle[1].position", "overlaps particle[0]"});
+}
+
+TEST(Config, TU7_TimeStepGuard) {
+  // t_col,min here is the k = 3 pair at k_n = 1e5: 1.921e-4 s; t_col / 10 = 1.92e-5 s.
+  const std::string too_big = replace(base(), "end_time = 0.01", "end_time = 0.01\ntime_step = 2.5e-5");
+  expect_error(too_big, "time_step = 2.5e-5", {"simulation.time_step", "2.5e-05", "1.921e-05", "t_col"});
+  const std::string ok = replace(base(), "end_time = 0.01", "end_time = 0.01\ntime_step = 9.6e-6");
+  EXPECT_EQ(error_of(ok), "");  // dt <= t_col / 20 passes
+}
+
+TEST(Config, RestitutionPolicyEnergyRefusesPaperValue) {
+  const std::string t = replace(base(), "k = 3", "k = 3\nrestitution_policy = \"energy\"");
+  expect_error(t, "restitution = 0.1 }", {"restitution", "no real value"});
+  const std::string clamped = replace(base(), "k = 3", "k = 3\nrestitution_policy = \"energy-clamped\"");
+  const Case c = config::load_case_text(clamped, "case.toml");
+  const CaseReport r = derive_case(c);
+  EXPECT_DOUBLE_EQ(r.coals[0].restitution.value, 0.01);
+  ASSERT_FALSE(r.warnings.empty());
+  EXPECT_NE(r.warnings[0].find("clamped"), std::string::npos);
+}
+
+TEST(Config, TomlSyntaxError) {
+  const std::string t = replace(base(), "k = 3", "k = = 3");
+  expect_error(t, "k = = 3", {"TOML syntax error"});
+}
+
+TEST(Config, DocsMentionEveryLawAndSection) {
+  const std::string md = config::markdown();
+  for (const char* s : {"[simulation]", "[[coal]]", "linear_history", "epsd", "mfix-like", "box"})
+    EXPECT_NE(md.find(s), std::string::npos) << s;
+}
+
+}  // namespace
+}  // namespace silodem

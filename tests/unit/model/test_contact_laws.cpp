@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: MIT
+// Each contact law alone, on a prescribed contact geometry (no time integration), against its
+// equation; and T-C5, the pull-off work of the cohesion range laws.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../../physics/helpers.hpp"
+#include "model/contact/cohesion_common.hpp"
+
+namespace silodem {
+namespace {
+
+using test::Laws;
+
+// Two equal spheres (R = 5 mm, m = 1 g) along x with the given overlap and normal approach rate.
+ContactGeometry geometry(double overlap, double overlap_rate = 0.0, Vec3 v_t = {}) {
+  BodyState i, j;
+  i.radius = j.radius = 5e-3;
+  i.mass = j.mass = 1e-3;
+  i.inertia = j.inertia = 0.4 * 1e-3 * 25e-6;
+  i.x = {2 * 5e-3 - overlap, 0, 0};
+  i.v = Vec3{-overlap_rate, 0, 0} + v_t;
+  return pair_geometry(i, j);
+}
+
+TEST(Registry, EverySlotHasNoneExceptNormalAndNamesAreUnique) {
+  for (Slot s : {Slot::Tangential, Slot::Rolling, Slot::Cohesion})
+    EXPECT_NE(find_law(s, "none"), nullptr) << slot_name(s);
+  EXPECT_NE(find_law(Slot::Normal, "linear_spring_dashpot"), nullptr);
+  for (const auto& a : contact_laws())
+    for (const auto& b : contact_laws())
+      if (&a != &b) {
+        EXPECT_FALSE(a.slot == b.slot && std::string(a.name) == b.name) << a.name;
+      }
+}
+
+TEST(Geometry, PairKinematics) {
+  const ContactGeometry g = geometry(1e-4, 0.2);
+  EXPECT_NEAR(g.overlap, 1e-4, 1e-15);
+  EXPECT_NEAR(g.overlap_rate, 0.2, 1e-12);
+  EXPECT_NEAR(g.n.x, 1.0, 1e-15);
+  EXPECT_NEAR(g.m_eff, 0.5e-3, 1e-15);
+  EXPECT_NEAR(g.r_eff, 2.5e-3, 1e-15);
+  EXPECT_NEAR(g.arm_i + g.arm_j, 1e-2 - 1e-4, 1e-15);
+  // Spin of i about z moves its contact point (at -arm_i x) by omega x r = -arm_i omega y.
+  BodyState i, j;
+  i.radius = j.radius = 5e-3;
+  i.mass = j.mass = 1e-3;
+  i.x = {1e-2, 0, 0};
+  i.omega = {0, 0, 10.0};
+  const ContactGeometry s = pair_geometry(i, j);
+  EXPECT_NEAR(s.v_t.y, -10.0 * 5e-3, 1e-12);
+}
+
+TEST(NormalLsd, SpringDashpotAndClip) {
+  Laws l;
+  l.normal_p = {{"stiffness", 2e4}, {"restitution", 0.3}};
+  const ContactLaw law = test::law_of(l, false);
+  const ContactGeometry g = geometry(1e-4, -0.5);  // separating
+  const NormalForce f = law.normal(law.np, g);
+  const double eta = normal_damping(2e4, 0.5e-3, 0.3);
+  EXPECT_NEAR(f.elastic, 2.0, 1e-12);
+  EXPECT_NEAR(f.damping, -0.5 * eta, 1e-12);
+  EXPECT_NEAR(f.total, 2.0 - 0.5 * eta, 1e-12);
+  const ContactGeometry fast = geometry(1e-5, -5.0);
+  EXPECT_LT(law.normal(law.np, fast).total, 0.0);  // MFIX: the dashpot may pull
+  l.normal_p["clip_attractive"] = 1;
+  const ContactLaw clipped = test::law_of(l, false);
+  EXPECT_EQ(clipped.normal(clipped.np, fast).total, 0.0);
+}
+
+TEST(TangentialHistory, SpringDashpotBelowTheCap) {
+  Laws l;
+  l.tangential = "linear_history";
+  l.tangential_p = {{"friction", 0.5}};
+  const ContactLaw law = test::law_of(l, false);
+  const ContactGeometry g = geometry(1e-4, 0.0, {0, 0.01, 0});
+  Vec3 spring{};
+  const double dt = 1e-5, eta_n = 1.0;
+  const Vec3 f = law.tangential(law.tp, g, eta_n, 100.0, spring, dt);
+  const double kt = 2.0 / 7.0 * 1e4;
+  EXPECT_NEAR(spring.y, 0.01 * dt, 1e-18);
+  EXPECT_NEAR(f.y, -kt * 0.01 * dt - 0.5 * eta_n * 0.01, 1e-12);
+}
+
+TEST(TangentialHistory, CoulombCapAndSpringReset) {
+  Laws l;
+  l.tangential = "linear_history";
+  l.tangential_p = {{"friction", 0.3}};
+  const ContactLaw law = test::law_of(l, false);
+  const ContactGeometry g = geometry(1e-4, 0.0, {0, 0.2, 0});
+  Vec3 spring{0, 1e-3, 0};  // far beyond the cap
+  const double cap_force = 2.0;
+  const Vec3 f = law.tangential(law.tp, g, 0.0, cap_force, spring, 1e-5);
+  EXPECT_NEAR(norm(f), 0.3 * 2.0, 1e-12);
+  EXPECT_LT(f.y, 0.0);
+  // Reset so that spring (+ dashpot, here zero) gives exactly the capped force (MFIX).
+  EXPECT_NEAR(-law.tp.stiffness * spring.y, f.y, 1e-12);
+}
+
+TEST(TangentialHistory, SpringIsRotatedIntoTheNewTangentPlane) {
+  Vec3 s{0.3, 1.0, 0.0};
+  rotate_into_tangent_plane(s, Vec3{1, 0, 0});
+  EXPECT_NEAR(s.x, 0.0, 1e-15);
+  EXPECT_NEAR(norm(s), std::sqrt(1.09), 1e-12);
+}
+
+TEST(CohesionLaws, ForceVersusGap) {
+  const double F = 0.26, d_ref = 1e-2;
+  Laws l;
+  l.cohesion = "overlap-only";
+  ContactLaw law = test::law_of(l, false, F, F);
+  EXPECT_EQ(law.cohesion(law.cp, geometry(1e-6)), F);
+  EXPECT_EQ(law.cohesion(law.cp, geometry(-1e-9)), 0.0);
+  EXPECT_EQ(law.cp.reach_over_d, 0.0);
+
+  l.cohesion = "constant-range";
+  l.cohesion_p = {{"range", 0.02}};
+  law = test::law_of(l, false, F, F);
+  EXPECT_EQ(law.cohesion(law.cp, geometry(1e-6)), F);
+  EXPECT_EQ(law.cohesion(law.cp, geometry(-0.019 * d_ref)), F);
+  EXPECT_EQ(law.cohesion(law.cp, geometry(-0.021 * d_ref)), 0.0);
+
+  l.cohesion = "mfix-like";
+  l.cohesion_p = {{"inner", 0.001}, {"outer", 0.05}};
+  law = test::law_of(l, false, F, F);
+  EXPECT_EQ(law.cohesion(law.cp, geometry(1e-6)), F);
+  EXPECT_EQ(law.cohesion(law.cp, geometry(-0.0005 * d_ref)), F);
+  EXPECT_NEAR(law.cohesion(law.cp, geometry(-0.004 * d_ref)), F / 16.0, 1e-12);
+  EXPECT_EQ(law.cohesion(law.cp, geometry(-0.051 * d_ref)), 0.0);
+  EXPECT_EQ(law.cp.reach_over_d, 0.05);
+}
+
+TEST(CohesionLaws, PairRulesAndWallFactor) {
+  EXPECT_DOUBLE_EQ(cohesion_pair_rule("mean", 0.2, 0.4), 0.3);
+  EXPECT_DOUBLE_EQ(cohesion_pair_rule("min", 0.2, 0.4), 0.2);
+  EXPECT_NEAR(cohesion_pair_rule("harmonic", 0.2, 0.4), 2 * 0.08 / 0.6, 1e-15);
+  Laws l;
+  l.cohesion = "overlap-only";
+  l.cohesion_s = {{"pair_rule", "min"}};
+  EXPECT_DOUBLE_EQ(test::law_of(l, false, 0.26, 0.417).cp.force, 0.26);
+  l.cohesion_s.clear();
+  l.cohesion_p = {{"wall_factor", 0.5}};
+  EXPECT_DOUBLE_EQ(test::law_of(l, true, 0.26).cp.force, 0.13);
+}
+
+// Quasi-static pull-off work W = integral of the net attractive force from the bonded
+// equilibrium (k_n delta = F) to where the force vanishes, evaluated through evaluate_contact.
+double pull_off_work(const ContactLaw& law) {
+  ContactState s;
+  const double d_ref = 1e-2;
+  double w = 0.0;
+  const double delta_eq = law.cp.force / law.np.stiffness;
+  const double end = law.cp.reach_over_d * d_ref + 1e-9;
+  const int n = 400000;
+  const double h = (delta_eq + end) / n;
+  for (int k = 0; k < n; ++k) {
+    const double overlap = delta_eq - (k + 0.5) * h;  // midpoint rule
+    const ContactResult r = evaluate_contact(law, geometry(overlap), s, 1e-6);
+    w += -r.force_i.x * h;  // force on i along +x (separation direction) is -pull
+  }
+  return w;
+}
+
+TEST(CohesionLaws, TC5_PullOffWorkOfRangeLaws) {
+  const double F = 0.2599;
+  const double d = 1e-2;
+  for (double kn : {1e3, 1e4, 1e5}) {
+    Laws l;
+    l.normal_p = {{"stiffness", kn}, {"restitution", 0.1}};
+    l.cohesion = "overlap-only";
+    EXPECT_NEAR(pull_off_work(test::law_of(l, false, F, F)) / (F * F / (2 * kn)), 1.0, 0.02);
+    l.cohesion = "constant-range";
+    l.cohesion_p = {{"range", 0.02}};
+    const double w_range = F * 0.02 * d + F * F / (2 * kn);
+    EXPECT_NEAR(pull_off_work(test::law_of(l, false, F, F)) / w_range, 1.0, 0.02) << kn;
+    l.cohesion = "mfix-like";
+    l.cohesion_p = {{"inner", 0.002}, {"outer", 0.02}};
+    const double s_in = 0.002 * d, s_out = 0.02 * d;
+    const double w_mfix = F * s_in + F * s_in * s_in * (1 / s_in - 1 / s_out) + F * F / (2 * kn);
+    EXPECT_NEAR(pull_off_work(test::law_of(l, false, F, F)) / w_mfix, 1.0, 0.02) << kn;
+  }
+}
+
+TEST(RollingEpsd, LimitTorqueAndOppositeOnPartner) {
+  Laws l;
+  l.rolling = "epsd";
+  l.rolling_p = {{"friction", 0.2}};
+  const ContactLaw law = test::law_of(l, false);
+  ContactGeometry g = geometry(1e-4);
+  g.omega_i = {0, 100.0, 0};
+  NormalForce fn;
+  fn.total = 1.0;
+  Vec3 spring{};
+  const RollingTorque t = law.rolling(law.rp, g, law.np, fn, 0.0, spring, 1e-3);
+  EXPECT_NEAR(norm(spring), 0.2 * g.r_eff * 1.0, 1e-15);  // saturated at mu_r R_eff |F_n|
+  EXPECT_LT(t.on_i.y, 0.0);
+  EXPECT_NEAR(t.on_j.y, -t.on_i.y, 1e-18);
+}
+
+TEST(RollingMfix, TorqueOpposesOwnSpinWithDiameter) {
+  Laws l;
+  l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
+  l.rolling = "mfix";
+  l.rolling_p = {{"friction", 0.6}};
+  const ContactLaw law = test::law_of(l, false);
+  ContactGeometry g = geometry(1e-4);
+  g.omega_i = {0, 0, 3.0};
+  g.omega_j = {2.0, 0, 0};
+  Vec3 spring{};
+  const RollingTorque t = law.rolling(law.rp, g, law.np, {}, 0.0, spring, 1e-5);
+  const double mag = 0.6 * 1e-2 * 1e4 * 1e-4;  // mu_r d k_n delta_n
+  EXPECT_NEAR(t.on_i.z, -mag, 1e-15);
+  EXPECT_NEAR(t.on_j.x, -mag, 1e-15);
+}
+
+TEST(ContactModel, NoTouchClearsHistoryAndRangedCohesionStillPulls) {
+  Laws l;
+  l.tangential = "linear_history";
+  l.tangential_p = {{"friction", 0.3}};
+  l.cohesion = "constant-range";
+  l.cohesion_p = {{"range", 0.05}};
+  const ContactLaw law = test::law_of(l, false, 0.1, 0.1);
+  ContactState s{{0, 1e-6, 0}, {}};
+  const ContactResult r = evaluate_contact(law, geometry(-1e-4), s, 1e-5);
+  EXPECT_FALSE(r.touching);
+  EXPECT_EQ(norm2(s.tangential), 0.0);
+  EXPECT_NEAR(r.force_i.x, -0.1, 1e-15);  // pulls i towards j
+}
+
+}  // namespace
+}  // namespace silodem
