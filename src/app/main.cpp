@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // silodem: coarse-grained DEM of wet, cohesive coal discharging from a silo.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
@@ -14,18 +14,24 @@ int main(int argc, char** argv) {
 
   app::RunOptions run;
   auto* run_cmd = cli.add_subcommand("run", "run a case and write its results into a directory");
-  run_cmd->add_option("case", run.case_path, "case file (TOML)")->required()->check(CLI::ExistingFile);
-  run_cmd->add_option("--out", run.out_dir, "output directory (must not exist or be empty)")->required();
+  run_cmd->add_option("case", run.case_path, "case file (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  run_cmd->add_option("--out", run.out_dir, "output directory (must not exist or be empty)")
+      ->required();
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: case file, else all)")
       ->check(CLI::Range(1, 1024));
 
   std::string check_path;
   bool json = false;
   auto* check_cmd = cli.add_subcommand("check", "validate a case and print the derived quantities");
-  check_cmd->add_option("case", check_path, "case file (TOML)")->required()->check(CLI::ExistingFile);
+  check_cmd->add_option("case", check_path, "case file (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
   check_cmd->add_flag("--json", json, "print one JSON object");
 
-  auto* docs_cmd = cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
+  auto* docs_cmd =
+      cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
 
   try {
     cli.parse(argc, argv);

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: MIT
 // `silodem run CASE.toml --out DIR`: the generic case (walls + placed particles); writes the
 // trajectories asked for in [output] as CSV.
+#include <fmt/format.h>
+#include <unistd.h>
 #include <chrono>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
-#include <unistd.h>
 
 #include "app/commands.hpp"
 #include "io/config/load.hpp"
@@ -18,8 +18,8 @@ namespace silodem::app {
 namespace {
 
 std::vector<std::string> trajectory_columns() {
-  return {"step", "t_s", "id", "coal", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s",
-          "wx_rad_s", "wy_rad_s", "wz_rad_s"};
+  return {"step",   "t_s",    "id",     "coal",     "x_m",      "y_m",     "z_m",
+          "vx_m_s", "vy_m_s", "vz_m_s", "wx_rad_s", "wy_rad_s", "wz_rad_s"};
 }
 
 void write_rows(CsvWriter& w, const Simulation& sim, const std::vector<std::uint64_t>& ids) {
@@ -60,9 +60,10 @@ int run_command(const RunOptions& o) {
 
   const fs::path out(o.out_dir);
   if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
-    throw InputError({}, "--out", fmt::format("'{}' exists and is not empty; refusing to overwrite "
-                                              "(choose a new directory)",
-                                              o.out_dir));
+    throw InputError({}, "--out",
+                     fmt::format("'{}' exists and is not empty; refusing to overwrite "
+                                 "(choose a new directory)",
+                                 o.out_dir));
   fs::create_directories(out);
   fs::copy_file(o.case_path, out / "case.toml", fs::copy_options::overwrite_existing);
   write_text(out / "check.json", case_report_json(c, report));
@@ -88,13 +89,15 @@ int run_command(const RunOptions& o) {
         last = now;
         const double wall = std::chrono::duration<double>(now - t0).count();
         const double frac = double(sim->step_count()) / double(std::max(total, 1L));
-        fmt::print(stderr, "{}t = {:.4f} / {:.4f} s  steps {}  particles {}  wall {:.0f} s  ETA {:.0f} s{}",
+        fmt::print(stderr,
+                   "{}t = {:.4f} / {:.4f} s  steps {}  particles {}  wall {:.0f} s  ETA {:.0f} s{}",
                    tty ? "\r" : "", sim->time(), c.time.end_time, sim->step_count(),
                    sim->particles().size(), wall, wall * (1.0 / std::max(frac, 1e-9) - 1.0),
                    tty ? "" : "\n");
       }
     }
-    if (c.output.every == 0 || sim->step_count() % c.output.every != 0) write_rows(traj, *sim, c.output.ids);
+    if (c.output.every == 0 || sim->step_count() % c.output.every != 0)
+      write_rows(traj, *sim, c.output.ids);
     traj.finish();
   } catch (const SimulationError& e) {
     status = kExitSimulation;
@@ -102,12 +105,13 @@ int run_command(const RunOptions& o) {
   }
   if (tty) fmt::print(stderr, "\n");
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  write_text(out / "summary.json",
-             fmt::format("{{\n  \"complete\": {},\n  \"error\": \"{}\",\n  \"steps\": {},\n  "
-                         "\"time_s\": {:.17g},\n  \"time_step_s\": {:.17g},\n  \"particles\": {},\n  "
-                         "\"k\": {:g},\n  \"wall_time_s\": {:.3f}\n}}\n",
-                         status == kExitOk, error, sim->step_count(), sim->time(), sim->dt(),
-                         sim->particles().size(), report.k, wall));
+  write_text(
+      out / "summary.json",
+      fmt::format("{{\n  \"complete\": {},\n  \"error\": \"{}\",\n  \"steps\": {},\n  "
+                  "\"time_s\": {:.17g},\n  \"time_step_s\": {:.17g},\n  \"particles\": {},\n  "
+                  "\"k\": {:g},\n  \"wall_time_s\": {:.3f}\n}}\n",
+                  status == kExitOk, error, sim->step_count(), sim->time(), sim->dt(),
+                  sim->particles().size(), report.k, wall));
   if (status != kExitOk) {
     fmt::print(stderr, "error: {}\n", error);
     return status;

@@ -20,7 +20,7 @@ struct Field {
   std::string key;
   FieldKind kind = FieldKind::Number;
   std::string doc;
-  std::string unit;  // unit the case file uses ("mm", "kPa", ...); empty = SI or dimensionless
+  std::string unit;    // unit the case file uses ("mm", "kPa", ...); empty = SI or dimensionless
   double to_si = 1.0;  // factor from the case-file unit to SI
   bool required = false;
   std::optional<double> default_number;  // Number, Integer, Bool (0/1)

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "engine/simulation.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #ifdef _OPENMP
 #include <omp.h>
@@ -213,7 +213,8 @@ EnergyBudget Simulation::energy() const {
     for (int k = list_.offset[i]; k < list_.offset[i + 1]; ++k) {
       const int j = list_.partner[k];
       const double ov = p_.radius[i] + p_.radius[j] - norm(p_.x[i] - p_.x[j]);
-      if (ov > 0) e.elastic += 0.5 * model_.pair(p_.material[i], p_.material[j]).np.stiffness * ov * ov;
+      if (ov > 0)
+        e.elastic += 0.5 * model_.pair(p_.material[i], p_.material[j]).np.stiffness * ov * ov;
     }
     for (int k = list_.wall_offset[i]; k < list_.wall_offset[i + 1]; ++k) {
       WallHit hit;
@@ -233,8 +234,8 @@ void Simulation::check_state() const {
           "particle {} has a non-finite state at step {} (t = {:.6g} s): position ({}, {}, {}), "
           "velocity ({}, {}, {}); likely cause: time step too large for the stiffness (dt = {:.3g} "
           "s) or particles created overlapping",
-          p_.id[i], steps_, time_, p_.x[i].x, p_.x[i].y, p_.x[i].z, p_.v[i].x, p_.v[i].y,
-          p_.v[i].z, s_.dt));
+          p_.id[i], steps_, time_, p_.x[i].x, p_.x[i].y, p_.x[i].z, p_.v[i].x, p_.v[i].y, p_.v[i].z,
+          s_.dt));
   }
 }
 

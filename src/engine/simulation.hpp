@@ -2,7 +2,8 @@
 // Owns the particles, walls, neighbour list with contact history and the contact model, and
 // advances them in time with velocity Verlet:
 //   hooks(begin) -> v_half = v + F/m dt/2 -> x += v_half dt -> neighbours
-//   -> forces (dashpots see the predicted v_half + F_old/m dt/2) -> v = v_half + F/m dt/2 -> hooks(end)
+//   -> forces (dashpots see the predicted v_half + F_old/m dt/2) -> v = v_half + F/m dt/2 ->
+//   hooks(end)
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -16,10 +17,10 @@
 namespace silodem {
 
 struct SimulationSettings {
-  double dt = 1e-5;                  // s
-  Vec3 gravity{0.0, 0.0, -9.81};     // m/s^2
-  double skin = 1e-3;                // m, Verlet skin
-  int threads = 0;                   // 0 = OpenMP default
+  double dt = 1e-5;               // s
+  Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
+  double skin = 1e-3;             // m, Verlet skin
+  int threads = 0;                // 0 = OpenMP default
 };
 
 struct EnergyBudget {

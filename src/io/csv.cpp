@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "io/csv.hpp"
 
+#include <fmt/format.h>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fmt/format.h>
 #include <stdexcept>
 
 namespace silodem {
@@ -12,7 +12,9 @@ namespace silodem {
 CsvWriter::CsvWriter(std::string path, const std::vector<std::string>& columns)
     : path_(std::move(path)), ncol_(columns.size()) {
   f_ = std::fopen((path_ + ".partial").c_str(), "wb");
-  if (!f_) throw std::runtime_error(fmt::format("cannot write {}.partial: {}", path_, std::strerror(errno)));
+  if (!f_)
+    throw std::runtime_error(
+        fmt::format("cannot write {}.partial: {}", path_, std::strerror(errno)));
   fmt::print(f_, "{}\n", fmt::join(columns, ","));
 }
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "model/coarse_graining.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/constants.hpp"
@@ -18,9 +18,12 @@ RestitutionPolicy restitution_policy_from_name(const std::string& name) {
 
 const char* restitution_policy_name(RestitutionPolicy p) {
   switch (p) {
-    case RestitutionPolicy::Energy: return "energy";
-    case RestitutionPolicy::EnergyClamped: return "energy-clamped";
-    case RestitutionPolicy::None: return "none";
+    case RestitutionPolicy::Energy:
+      return "energy";
+    case RestitutionPolicy::EnergyClamped:
+      return "energy-clamped";
+    case RestitutionPolicy::None:
+      return "none";
   }
   return "?";
 }

@@ -21,9 +21,9 @@ struct CoarseGraining {
   RestitutionPolicy restitution_policy = RestitutionPolicy::None;
   double restitution_floor = 0.01;  // e_min for EnergyClamped
 
-  double diameter(double d) const { return k * d; }            // Eq. 1
-  double mass(double m) const { return k * k * k * m; }         // Eq. 2
-  double cohesion_force(double f_l) const;                      // Eq. 13 with exponent alpha
+  double diameter(double d) const { return k * d; }      // Eq. 1
+  double mass(double m) const { return k * k * k * m; }  // Eq. 2
+  double cohesion_force(double f_l) const;               // Eq. 13 with exponent alpha
 };
 
 struct RestitutionCg {

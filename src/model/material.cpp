@@ -27,9 +27,10 @@ CoalDerived derive(const CoalProperties& c) {
   CoalDerived d;
   d.porosity = porosity(c.bulk_density, c.true_density, c.moisture);
   d.tensile_strength = tensile_strength(c.cohesion, c.friction_angle);
-  d.cohesion_force = c.cohesion_force_override
-                         ? *c.cohesion_force_override
-                         : moisture_cohesion_force(c.sauter_diameter, d.tensile_strength, d.porosity);
+  d.cohesion_force =
+      c.cohesion_force_override
+          ? *c.cohesion_force_override
+          : moisture_cohesion_force(c.sauter_diameter, d.tensile_strength, d.porosity);
   d.particle_mass = sphere_mass(c.diameter, c.true_density);
   d.bond_number = d.cohesion_force / (d.particle_mass * kGravity);
   return d;

@@ -16,14 +16,14 @@ struct SizeClass {
 
 struct CoalProperties {
   std::string name;
-  double diameter = 0.0;          // m, average particle diameter (DEM size when no PSD)
-  double sauter_diameter = 0.0;   // m, d_sv of Eq. 14 (E8: its own input; default = diameter)
-  double bulk_density = 0.0;      // kg/m^3, measured (wet) bulk density rho_b
-  double true_density = 0.0;      // kg/m^3, particle density rho_p
-  double cohesion = 0.0;          // Pa, C of the Mohr-Coulomb fit (E1: kPa in the table)
-  double friction_angle = 0.0;    // rad, internal friction angle phi
-  double moisture = 0.0;          // fraction (0..1), M/100 of Eq. 15
-  double heating_value = 0.0;     // kcal/kg, lower heating value (Eq. 17)
+  double diameter = 0.0;         // m, average particle diameter (DEM size when no PSD)
+  double sauter_diameter = 0.0;  // m, d_sv of Eq. 14 (E8: its own input; default = diameter)
+  double bulk_density = 0.0;     // kg/m^3, measured (wet) bulk density rho_b
+  double true_density = 0.0;     // kg/m^3, particle density rho_p
+  double cohesion = 0.0;         // Pa, C of the Mohr-Coulomb fit (E1: kPa in the table)
+  double friction_angle = 0.0;   // rad, internal friction angle phi
+  double moisture = 0.0;         // fraction (0..1), M/100 of Eq. 15
+  double heating_value = 0.0;    // kcal/kg, lower heating value (Eq. 17)
   std::optional<double> cohesion_force_override;  // N, replaces Eq. 14 when given
   std::vector<SizeClass> size_classes;            // empty = monodisperse at `diameter`
 };

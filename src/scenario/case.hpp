@@ -15,12 +15,12 @@
 namespace silodem {
 
 struct TimeSpec {
-  double end_time = 1.0;             // s
-  double time_step = 0.0;            // s; 0 = t_col,min / steps_per_collision
-  double steps_per_collision = 50;   // N in dt = t_col / N (MFIX's DTSOLID_FACTOR default)
-  Vec3 gravity{0.0, 0.0, -9.81};     // m/s^2
-  double skin = 0.25;                // Verlet skin / smallest CG diameter
-  int threads = 0;                   // 0 = all cores
+  double end_time = 1.0;            // s
+  double time_step = 0.0;           // s; 0 = t_col,min / steps_per_collision
+  double steps_per_collision = 50;  // N in dt = t_col / N (MFIX's DTSOLID_FACTOR default)
+  Vec3 gravity{0.0, 0.0, -9.81};    // m/s^2
+  double skin = 0.25;               // Verlet skin / smallest CG diameter
+  int threads = 0;                  // 0 = all cores
   std::uint64_t seed = 1;
   SourcePlace time_step_place, steps_place;
 };
@@ -48,8 +48,8 @@ struct LatticeSpec {
 };
 
 struct OutputSpec {
-  long every = 0;                    // steps between rows of trajectory.csv; 0 = final state only
-  std::vector<std::uint64_t> ids;    // particles to write; empty = all
+  long every = 0;                  // steps between rows of trajectory.csv; 0 = final state only
+  std::vector<std::uint64_t> ids;  // particles to write; empty = all
 };
 
 struct Case {

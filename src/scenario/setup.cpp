@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "scenario/setup.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/constants.hpp"
 #include "engine/neighbor/cell_grid.hpp"
@@ -61,14 +61,14 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
   for (std::size_t a = 0; a < c.coals.size(); ++a) min_mass[a] = r.coals[a].cg_mass;
   for (const auto& p : c.particles)
     if (p.diameter > 0)
-      min_mass[p.coal] = std::min(min_mass[p.coal], sphere_mass(p.diameter, c.coals[p.coal].true_density));
+      min_mass[p.coal] =
+          std::min(min_mass[p.coal], sphere_mass(p.diameter, c.coals[p.coal].true_density));
 
   r.collision_time_min = 1e300;
   for (std::size_t a = 0; a < c.coals.size(); ++a) {
     auto& cr = r.coals[a];
     const NormalParams& np = model.pair(int(a), int(a)).np;
-    cr.restitution = restitution_cg(
-        c.particle_particle.normal.values.number("restitution"), c.cg);
+    cr.restitution = restitution_cg(c.particle_particle.normal.values.number("restitution"), c.cg);
     cr.restitution.value = np.restitution;
     const double m_eff = effective_mass(cr.cg_mass, cr.cg_mass);
     cr.damping_normal = 2.0 * np.damping_ratio * std::sqrt(m_eff * np.stiffness);
@@ -77,8 +77,9 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
     cr.wall_damping_normal = 2.0 * wp.damping_ratio * std::sqrt(cr.cg_mass * wp.stiffness);
     cr.wall_collision_time = model.wall_collision_time(int(a), cr.cg_mass);
     for (std::size_t b = 0; b < c.coals.size(); ++b)
-      r.collision_time_min = std::min(
-          r.collision_time_min, model.pair_collision_time(int(a), int(b), min_mass[a], min_mass[b]));
+      r.collision_time_min =
+          std::min(r.collision_time_min,
+                   model.pair_collision_time(int(a), int(b), min_mass[a], min_mass[b]));
     r.collision_time_min =
         std::min(r.collision_time_min, model.wall_collision_time(int(a), min_mass[a]));
   }

@@ -99,5 +99,9 @@ try_bad overlap 's/position = \[0.02, 0.0, 0.01\]/position = [0.001, 0.0, 0.01]/
 try_bad missing 's/^true_density_kg_m3 = 1567$//' "true_density_kg_m3" '^\[\[coal\]\]'
 try_bad dt 's/^end_time = 0.01/end_time = 0.01\ntime_step = 1e-4/' "simulation.time_step" "time_step = 1e-4"
 
+# 4. docs/config.md is generated from the schema and must be current.
+"$bin" config-docs | diff -q - "$src/docs/config.md" > /dev/null ||
+  bad "docs/config.md is stale: run 'silodem config-docs > docs/config.md'"
+
 [ $fail -eq 0 ] && say "e2e ok"
 exit $fail

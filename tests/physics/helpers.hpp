@@ -31,6 +31,8 @@ ContactModel model_of(const Laws& pp, const std::vector<double>& cohesion_cg = {
 ContactLaw law_of(const Laws& l, bool wall, double f_i = 0.0, double f_j = 0.0,
                   CoarseGraining cg = {});
 
-inline double sphere_mass_of(double d, double rho) { return 3.14159265358979323846 / 6.0 * d * d * d * rho; }
+inline double sphere_mass_of(double d, double rho) {
+  return 3.14159265358979323846 / 6.0 * d * d * d * rho;
+}
 
 }  // namespace silodem::test

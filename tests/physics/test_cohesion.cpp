@@ -11,8 +11,8 @@
 namespace silodem {
 namespace {
 
-constexpr double kFL = 0.2599;               // F_L,cg of Longwanggou at k = 3 (N)
-constexpr double kR = 4.2e-3;                 // k = 3 CG radius (m)
+constexpr double kFL = 0.2599;  // F_L,cg of Longwanggou at k = 3 (N)
+constexpr double kR = 4.2e-3;   // k = 3 CG radius (m)
 const double kM = test::sphere_mass_of(2 * kR, 1567);
 
 test::Laws cohesive(double kn, double e = 0.1) {
@@ -26,7 +26,8 @@ test::Laws cohesive(double kn, double e = 0.1) {
 // held for 200 t_col. Returns the final overlap (< 0: separated).
 double pull_apart(double kn, double p_over_f, bool wall) {
   ContactModel model = test::model_of(cohesive(kn), {kFL});
-  const double t_col = wall ? model.wall_collision_time(0, kM) : model.pair_collision_time(0, 0, kM, kM);
+  const double t_col =
+      wall ? model.wall_collision_time(0, kM) : model.pair_collision_time(0, 0, kM, kM);
   SimulationSettings s;
   s.dt = t_col / 50.0;
   s.gravity = {};
@@ -121,7 +122,8 @@ bool chain_holds(int n, double k, double alpha) {
   Simulation sim(std::move(model), s);
   sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{0, 0, -1}));
   const double d_eq = f_cg / kn;
-  for (int i = 0; i < n; ++i) sim.particles().add({0, 0, -r + d_eq - i * (2 * r - d_eq)}, {}, {}, r, m, 0);
+  for (int i = 0; i < n; ++i)
+    sim.particles().add({0, 0, -r + d_eq - i * (2 * r - d_eq)}, {}, {}, r, m, 0);
   const double ramp = 400 * t_col;
   sim.add_hook({"gravity", Phase::StepBegin, 1, [&](Simulation& sm) {
                   sm.set_gravity({0, 0, -9.81 * std::min(1.0, sm.time() / ramp)});

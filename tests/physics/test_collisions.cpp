@@ -27,7 +27,8 @@ Outcome collide(double e, double ratio, bool clip, bool force_zero_ends, double 
   ContactModel model = test::model_of(l);
   const bool wall = ratio == 0.0;
   const double m1 = wall ? 0.0 : m0 * ratio;
-  const double t_col = wall ? model.wall_collision_time(0, m0) : model.pair_collision_time(0, 0, m0, m1);
+  const double t_col =
+      wall ? model.wall_collision_time(0, m0) : model.pair_collision_time(0, 0, m0, m1);
   SimulationSettings s;
   s.dt = t_col / dt_factor;
   s.gravity = {};
@@ -108,8 +109,8 @@ TEST(Collisions, TP3_ClippingRaisesLowRestitution) {
   // After t* the force is zero and the overlap closes at the rebound speed e_clip.
   const double overlap_star = std::exp(-b * t_star) * std::sin(wt) / w;
   const double duration = (t_star + overlap_star / e_clip) / (kPi / w);
-  EXPECT_NEAR(e_clip, 0.252, 0.001);     // VERIFICATION.md T-P3
-  EXPECT_NEAR(duration, 0.90, 0.01);     // duration 0.90 t_col
+  EXPECT_NEAR(e_clip, 0.252, 0.001);  // VERIFICATION.md T-P3
+  EXPECT_NEAR(duration, 0.90, 0.01);  // duration 0.90 t_col
   for (double ratio : {1.0, 0.0}) {
     // The clipped force has a kink at t*, which costs first-order accuracy: 3% at t_col/50.
     const Outcome o = collide(e, ratio, true, false, 1000);

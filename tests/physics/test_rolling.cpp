@@ -49,7 +49,7 @@ test::Laws frictional(double mu, double kn = 1e4) {
 TEST(Rolling, TP5_SlipToRoll) {
   const double mu = 0.3, v0 = 1.0;
   Ball b = ball_on_plane(frictional(mu), {v0, 0, 0}, {});
-  const double t_s = 2 * v0 / (7 * mu * kG);            // 0.0971 s
+  const double t_s = 2 * v0 / (7 * mu * kG);                 // 0.0971 s
   const double slip = v0 * t_s - 0.5 * mu * kG * t_s * t_s;  // 0.0832 m
   double t_meas = -1, x_meas = 0;
   while (b.sim->time() < 0.3) {

@@ -9,7 +9,9 @@ namespace {
 bool nonzero(const ContactState& s) {
   return norm2(s.tangential) > 0.0 || norm2(s.rolling) > 0.0;
 }
-ContactState flipped(const ContactState& s) { return {-s.tangential, -s.rolling}; }
+ContactState flipped(const ContactState& s) {
+  return {-s.tangential, -s.rolling};
+}
 bool key_less(std::uint64_t a1, std::uint64_t b1, std::uint64_t a2, std::uint64_t b2) {
   return a1 != a2 ? a1 < a2 : b1 < b2;
 }
@@ -118,9 +120,9 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   wall_state.assign(wall.size(), ContactState{});
   if (!saved_pairs_.empty() || !saved_walls_.empty()) {
     auto find = [](const std::vector<Saved>& v, std::uint64_t a, std::uint64_t b) -> const Saved* {
-      auto it = std::lower_bound(v.begin(), v.end(), Saved{a, b, {}}, [](const Saved& l, const Saved& r) {
-        return key_less(l.a, l.b, r.a, r.b);
-      });
+      auto it = std::lower_bound(
+          v.begin(), v.end(), Saved{a, b, {}},
+          [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); });
       return (it != v.end() && it->a == a && it->b == b) ? &*it : nullptr;
     };
 #pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)

@@ -5,7 +5,8 @@
 
 namespace silodem {
 
-PlaneWall::PlaneWall(const Vec3& point, const Vec3& normal) : p_(point), n_(normal / norm(normal)) {}
+PlaneWall::PlaneWall(const Vec3& point, const Vec3& normal)
+    : p_(point), n_(normal / norm(normal)) {}
 
 bool PlaneWall::near(const Vec3& c, double limit, WallHit& hit) const {
   const double d = dot(c - p_, n_);

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "io/config/load.hpp"
 
+#include <fmt/format.h>
+#include <toml++/toml.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "engine/walls/wall.hpp"
 #include "io/config/schema.hpp"
@@ -25,12 +25,18 @@ struct Reader {
 
   std::string type_name(FieldKind k) const {
     switch (k) {
-      case FieldKind::Number: return "a number";
-      case FieldKind::Integer: return "an integer";
-      case FieldKind::Bool: return "true or false";
-      case FieldKind::String: return "a string";
-      case FieldKind::Vec3: return "an array of 3 numbers";
-      case FieldKind::IntegerList: return "an array of integers";
+      case FieldKind::Number:
+        return "a number";
+      case FieldKind::Integer:
+        return "an integer";
+      case FieldKind::Bool:
+        return "true or false";
+      case FieldKind::String:
+        return "a string";
+      case FieldKind::Vec3:
+        return "an array of 3 numbers";
+      case FieldKind::IntegerList:
+        return "an array of integers";
     }
     return "?";
   }
@@ -61,8 +67,9 @@ struct Reader {
       if (std::find(known.begin(), known.end(), key) != known.end()) continue;
       const std::string hint = did_you_mean(key, known);
       throw InputError(place(node), section.empty() ? key : section + "." + key,
-                       hint.empty() ? fmt::format("unknown key; allowed here: {}", fmt::join(known, ", "))
-                                    : fmt::format("unknown key; did you mean '{}'?", hint));
+                       hint.empty()
+                           ? fmt::format("unknown key; allowed here: {}", fmt::join(known, ", "))
+                           : fmt::format("unknown key; did you mean '{}'?", hint));
     }
     for (const auto& f : fields) {
       const toml::node* node = t.get(f.key);
@@ -71,9 +78,15 @@ struct Reader {
         if (f.required) throw InputError(v.place, full, "missing required key (" + f.doc + ")");
         v.given[f.key] = false;
         switch (f.kind) {
-          case FieldKind::String: v.strings[f.key] = f.default_string; break;
-          case FieldKind::Vec3: v.vectors[f.key] = Vec3{}; break;
-          case FieldKind::IntegerList: v.lists[f.key] = {}; break;
+          case FieldKind::String:
+            v.strings[f.key] = f.default_string;
+            break;
+          case FieldKind::Vec3:
+            v.vectors[f.key] = Vec3{};
+            break;
+          case FieldKind::IntegerList:
+            v.lists[f.key] = {};
+            break;
           default:
             if (f.default_number) v.numbers[f.key] = *f.default_number * f.to_si;
         }
@@ -110,7 +123,8 @@ struct Reader {
         case FieldKind::String: {
           if (!node->is_string()) throw bad_type();
           std::string s = node->value<std::string>().value();
-          if (!f.choices.empty() && std::find(f.choices.begin(), f.choices.end(), s) == f.choices.end()) {
+          if (!f.choices.empty() &&
+              std::find(f.choices.begin(), f.choices.end(), s) == f.choices.end()) {
             const std::string hint = did_you_mean(s, f.choices);
             throw InputError(at, full,
                              fmt::format("= \"{}\" is not allowed; choose one of: {}{}", s,
@@ -176,7 +190,10 @@ struct Reader {
     const toml::node* n = contact.get(key);
     SlotChoice c;
     if (!n) {
-      if (s == Slot::Normal) throw InputError(place(contact), full, "missing required slot (e.g. { law = \"linear_spring_dashpot\", stiffness = 1e5, restitution = 0.1 })");
+      if (s == Slot::Normal)
+        throw InputError(place(contact), full,
+                         "missing required slot (e.g. { law = \"linear_spring_dashpot\", stiffness "
+                         "= 1e5, restitution = 0.1 })");
       c.law = "none";
       c.values.section = full;
       c.values.place = place(contact);
@@ -186,8 +203,9 @@ struct Reader {
     const toml::node* law = t.get("law");
     const auto names = law_names(s);
     if (!law || !law->is_string())
-      throw InputError(place(t), full + ".law",
-                       fmt::format("missing or not a string; choose one of: {}", fmt::join(names, ", ")));
+      throw InputError(
+          place(t), full + ".law",
+          fmt::format("missing or not a string; choose one of: {}", fmt::join(names, ", ")));
     c.law = law->value<std::string>().value();
     const LawEntry* e = find_law(s, c.law);
     if (!e) {
@@ -204,7 +222,8 @@ struct Reader {
   ContactSpec contact(const toml::table& root, const std::string& which, bool wall) {
     const std::string section = "contact." + which;
     const toml::node* cn = root.get("contact");
-    if (!cn) throw InputError({file, 1, 1}, "contact", "missing required section [contact." + which + "]");
+    if (!cn)
+      throw InputError({file, 1, 1}, "contact", "missing required section [contact." + which + "]");
     const toml::table& ct = table_at(*cn, "contact");
     const toml::node* n = ct.get(which);
     if (!n) throw InputError(place(ct), section, "missing required section [" + section + "]");
@@ -214,9 +233,10 @@ struct Reader {
       const std::vector<std::string> slots = {"normal", "tangential", "rolling", "cohesion"};
       if (std::find(slots.begin(), slots.end(), key) == slots.end()) {
         const std::string hint = did_you_mean(key, slots);
-        throw InputError(place(node), section + "." + key,
-                         "unknown slot" + (hint.empty() ? "; slots are normal, tangential, rolling, cohesion"
-                                                        : "; did you mean '" + hint + "'?"));
+        throw InputError(
+            place(node), section + "." + key,
+            "unknown slot" + (hint.empty() ? "; slots are normal, tangential, rolling, cohesion"
+                                           : "; did you mean '" + hint + "'?"));
       }
     }
     ContactSpec spec;
@@ -236,9 +256,9 @@ int coal_index(const Case& c, const ParamValues& v, const std::string& key) {
     names.push_back(c.coals[i].name);
   }
   const std::string hint = did_you_mean(name, names);
-  throw v.error(key, fmt::format("= \"{}\" is not a [[coal]] name; known: {}{}", name,
-                                 fmt::join(names, ", "),
-                                 hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+  throw v.error(
+      key, fmt::format("= \"{}\" is not a [[coal]] name; known: {}{}", name, fmt::join(names, ", "),
+                       hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
 }
 
 Case build(const toml::table& root, const std::string& file) {
@@ -251,8 +271,9 @@ Case build(const toml::table& root, const std::string& file) {
     if (std::find(top.begin(), top.end(), key) != top.end()) continue;
     const std::string hint = did_you_mean(key, top);
     throw InputError(r.place(node), key,
-                     hint.empty() ? fmt::format("unknown section; allowed: {}", fmt::join(top, ", "))
-                                  : fmt::format("unknown section; did you mean '{}'?", hint));
+                     hint.empty()
+                         ? fmt::format("unknown section; allowed: {}", fmt::join(top, ", "))
+                         : fmt::format("unknown section; did you mean '{}'?", hint));
   }
   if (const toml::node* t = root.get("title")) {
     if (!t->is_string()) throw InputError(r.place(*t), "title", "must be a string");
@@ -280,8 +301,8 @@ Case build(const toml::table& root, const std::string& file) {
   }
   // [coarse_graining]
   {
-    const ParamValues v = r.read(single("coarse_graining"), section("coarse_graining").fields,
-                                 "coarse_graining");
+    const ParamValues v =
+        r.read(single("coarse_graining"), section("coarse_graining").fields, "coarse_graining");
     c.cg.k = v.number("k");
     c.cg.cohesion_exponent = v.number("cohesion_exponent");
     c.cg.restitution_policy = restitution_policy_from_name(v.string("restitution_policy"));
@@ -299,14 +320,18 @@ Case build(const toml::table& root, const std::string& file) {
     for (const auto& other : c.coals)
       if (other.name == p.name) throw v.error("name", "= \"" + p.name + "\" is used by two coals");
     p.diameter = v.number("diameter_mm");
-    p.sauter_diameter = v.was_given("sauter_diameter_mm") ? v.number("sauter_diameter_mm") : p.diameter;
+    p.sauter_diameter =
+        v.was_given("sauter_diameter_mm") ? v.number("sauter_diameter_mm") : p.diameter;
     p.true_density = v.number("true_density_kg_m3");
     p.heating_value = v.number("heating_value_kcal_kg");
     if (v.was_given("cohesion_force_n")) p.cohesion_force_override = v.number("cohesion_force_n");
     const bool measured_needed = !p.cohesion_force_override;
-    for (const char* key : {"bulk_density_kg_m3", "cohesion_kpa", "friction_angle_deg", "moisture_percent"}) {
+    for (const char* key :
+         {"bulk_density_kg_m3", "cohesion_kpa", "friction_angle_deg", "moisture_percent"}) {
       if (measured_needed && !v.was_given(key))
-        throw v.error(key, "missing: needed to derive the cohesive force (Eq. 14-16), or give cohesion_force_n");
+        throw v.error(
+            key,
+            "missing: needed to derive the cohesive force (Eq. 14-16), or give cohesion_force_n");
     }
     if (v.was_given("bulk_density_kg_m3")) {
       p.bulk_density = v.number("bulk_density_kg_m3");
@@ -336,8 +361,9 @@ Case build(const toml::table& root, const std::string& file) {
       const std::string key(k.str());
       if (key != "particle_particle" && key != "particle_wall") {
         const std::string hint = did_you_mean(key, {"particle_particle", "particle_wall"});
-        throw InputError(r.place(node), "contact." + key,
-                         "unknown section" + (hint.empty() ? std::string() : "; did you mean '" + hint + "'?"));
+        throw InputError(
+            r.place(node), "contact." + key,
+            "unknown section" + (hint.empty() ? std::string() : "; did you mean '" + hint + "'?"));
       }
     }
   }
@@ -350,15 +376,17 @@ Case build(const toml::table& root, const std::string& file) {
       const std::string sec = fmt::format("wall[{}]", i);
       const toml::node* t = ws[i]->get("type");
       if (!t || !t->is_string())
-        throw InputError(r.place(*ws[i]), sec + ".type",
-                         fmt::format("missing or not a string; choose one of: {}", fmt::join(types, ", ")));
+        throw InputError(
+            r.place(*ws[i]), sec + ".type",
+            fmt::format("missing or not a string; choose one of: {}", fmt::join(types, ", ")));
       const std::string type = t->value<std::string>().value();
       const WallEntry* e = find_wall_type(type);
       if (!e) {
         const std::string hint = did_you_mean(type, types);
         throw InputError(r.place(*t), sec + ".type",
                          fmt::format("= \"{}\" is not a wall type; choose one of: {}{}", type,
-                                     fmt::join(types, ", "), hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+                                     fmt::join(types, ", "),
+                                     hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
       }
       WallSpec spec{type, r.read(*ws[i], e->fields(), sec, {"type"})};
       e->make(spec.values);  // validates geometry now, so errors come before any output
@@ -393,7 +421,10 @@ Case build(const toml::table& root, const std::string& file) {
       const Vec3 n = v.vector("count");
       for (double x : {n.x, n.y, n.z})
         if (x < 1 || x > 1e4 || x != std::floor(x))
-          throw v.error("count", fmt::format("components must be integers in [1, 10000], got ({:g}, {:g}, {:g})", n.x, n.y, n.z));
+          throw v.error(
+              "count",
+              fmt::format("components must be integers in [1, 10000], got ({:g}, {:g}, {:g})", n.x,
+                          n.y, n.z));
       l.nx = int(n.x), l.ny = int(n.y), l.nz = int(n.z);
       if (double(l.nx) * l.ny * l.nz > 2e7) throw v.error("count", "more than 2e7 particles");
       l.place = v.place;
@@ -433,6 +464,8 @@ Case load_case_file(const std::string& path) {
   return parse(ss.str(), path);
 }
 
-Case load_case_text(const std::string& text, const std::string& name) { return parse(text, name); }
+Case load_case_text(const std::string& text, const std::string& name) {
+  return parse(text, name);
+}
 
 }  // namespace silodem::config

@@ -10,9 +10,9 @@
 namespace silodem::config {
 
 struct Section {
-  std::string name;     // "simulation", "coal", ...
+  std::string name;  // "simulation", "coal", ...
   std::string doc;
-  bool array = false;   // [[name]]
+  bool array = false;  // [[name]]
   std::vector<Field> fields;
 };
 

@@ -12,8 +12,9 @@ double kernel(const CohesionParams& p, const ContactGeometry& g) {
 }
 std::vector<Field> fields(bool wall) {
   auto f = cohesion_common_fields(wall);
-  f.insert(f.begin(), Field::number("range", "gap s_c up to which the force acts, / d_ref "
-                                             "(mean diameter of the pair; d at a wall)")
+  f.insert(f.begin(), Field::number("range",
+                                    "gap s_c up to which the force acts, / d_ref "
+                                    "(mean diameter of the pair; d at a wall)")
                           .needed()
                           .at_least(0)
                           .at_most(1));

@@ -19,13 +19,15 @@ double kernel(const CohesionParams& p, const ContactGeometry& g) {
 }
 std::vector<Field> fields(bool wall) {
   auto f = cohesion_common_fields(wall);
-  f.insert(f.begin(), {Field::number("inner", "inner cutoff gap s_in / d_ref").needed().above(0).at_most(1),
-                       Field::number("outer", "outer cutoff gap s_out / d_ref").needed().above(0).at_most(1)});
+  f.insert(f.begin(),
+           {Field::number("inner", "inner cutoff gap s_in / d_ref").needed().above(0).at_most(1),
+            Field::number("outer", "outer cutoff gap s_out / d_ref").needed().above(0).at_most(1)});
   return f;
 }
 void configure(const ParamValues& v, const LawContext& ctx, ContactLaw& law) {
   if (v.number("outer") <= v.number("inner"))
-    throw v.error("outer", "must be larger than 'inner' (" + std::to_string(v.number("inner")) + ")");
+    throw v.error("outer",
+                  "must be larger than 'inner' (" + std::to_string(v.number("inner")) + ")");
   law.cp = CohesionParams{};
   law.cp.force = cohesion_pair_force(v, ctx);
   law.cp.inner_over_d = v.number("inner");

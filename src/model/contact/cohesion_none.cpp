@@ -5,8 +5,12 @@
 namespace silodem {
 namespace {
 
-double kernel(const CohesionParams&, const ContactGeometry&) { return 0.0; }
-std::vector<Field> fields(bool) { return {}; }
+double kernel(const CohesionParams&, const ContactGeometry&) {
+  return 0.0;
+}
+std::vector<Field> fields(bool) {
+  return {};
+}
 void configure(const ParamValues&, const LawContext&, ContactLaw& law) {
   law.cp = CohesionParams{};
   law.cohesion = &kernel;
@@ -14,6 +18,8 @@ void configure(const ParamValues&, const LawContext&, ContactLaw& law) {
 
 }  // namespace
 
-LawEntry cohesion_none_entry() { return {"none", Slot::Cohesion, "dry", &fields, &configure}; }
+LawEntry cohesion_none_entry() {
+  return {"none", Slot::Cohesion, "dry", &fields, &configure};
+}
 
 }  // namespace silodem

@@ -11,7 +11,9 @@ namespace {
 double kernel(const CohesionParams& p, const ContactGeometry& g) {
   return g.overlap > 0.0 ? p.force : 0.0;
 }
-std::vector<Field> fields(bool wall) { return cohesion_common_fields(wall); }
+std::vector<Field> fields(bool wall) {
+  return cohesion_common_fields(wall);
+}
 void configure(const ParamValues& v, const LawContext& ctx, ContactLaw& law) {
   law.cp = CohesionParams{};
   law.cp.force = cohesion_pair_force(v, ctx);

@@ -60,7 +60,9 @@ double ContactModel::pair_collision_time(int a, int b, double m_a, double m_b) c
   return t_col(pair(a, b).np, effective_mass(m_a, m_b));
 }
 
-double ContactModel::wall_collision_time(int a, double m) const { return t_col(wall(a).np, m); }
+double ContactModel::wall_collision_time(int a, double m) const {
+  return t_col(wall(a).np, m);
+}
 
 ContactResult evaluate_contact(const ContactLaw& law, const ContactGeometry& g, ContactState& s,
                                double dt) {
@@ -75,7 +77,8 @@ ContactResult evaluate_contact(const ContactLaw& law, const ContactGeometry& g, 
   r.touching = true;
   const NormalForce fn = law.normal(law.np, g);
   r.normal = fn.total;
-  const double cap = law.tp.cap_sees_cohesion ? std::fabs(fn.total - r.cohesion) : std::fabs(fn.total);
+  const double cap =
+      law.tp.cap_sees_cohesion ? std::fabs(fn.total - r.cohesion) : std::fabs(fn.total);
   const Vec3 ft = law.tangential(law.tp, g, fn.eta, cap, s.tangential, dt);
   // Torque of the tangential force about each centre: r x F with r = -arm_i n (on i) and
   // r = +arm_j n with force -F_t (on j); both equal -arm (n x F_t).

@@ -12,8 +12,8 @@
 namespace silodem {
 
 struct SlotChoice {
-  std::string law;    // registry name
-  ParamValues values; // validated against the law's fields
+  std::string law;     // registry name
+  ParamValues values;  // validated against the law's fields
 };
 
 // The case file's [contact.particle_particle] or [contact.particle_wall].
@@ -22,7 +22,7 @@ struct ContactSpec {
 };
 
 struct ContactResult {
-  Vec3 force_i;         // on i; j gets -force_i
+  Vec3 force_i;  // on i; j gets -force_i
   Vec3 torque_i, torque_j;
   double cohesion = 0.0;  // attractive force magnitude acting (N)
   double normal = 0.0;    // elastic + damping normal force (N, repulsive > 0)

@@ -36,10 +36,14 @@ const std::vector<LawEntry>& contact_laws() {
 
 const char* slot_name(Slot s) {
   switch (s) {
-    case Slot::Normal: return "normal";
-    case Slot::Tangential: return "tangential";
-    case Slot::Rolling: return "rolling";
-    case Slot::Cohesion: return "cohesion";
+    case Slot::Normal:
+      return "normal";
+    case Slot::Tangential:
+      return "tangential";
+    case Slot::Rolling:
+      return "rolling";
+    case Slot::Cohesion:
+      return "cohesion";
   }
   return "?";
 }

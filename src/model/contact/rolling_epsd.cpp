@@ -16,7 +16,8 @@ namespace {
 
 RollingTorque kernel(const RollingParams& p, const ContactGeometry& g, const NormalParams& np,
                      const NormalForce& fn, double cohesion, Vec3& spring, double dt) {
-  const double k_r = p.stiffness_factor * np.stiffness * p.friction * p.friction * g.r_eff * g.r_eff;
+  const double k_r =
+      p.stiffness_factor * np.stiffness * p.friction * p.friction * g.r_eff * g.r_eff;
   Vec3 w = g.omega_i - g.omega_j;
   w -= dot(w, g.n) * g.n;
   rotate_into_tangent_plane(spring, g.n);

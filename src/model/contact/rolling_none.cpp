@@ -10,8 +10,12 @@ RollingTorque kernel(const RollingParams&, const ContactGeometry&, const NormalP
   spring = Vec3{};
   return {};
 }
-std::vector<Field> fields(bool) { return {}; }
-void configure(const ParamValues&, const LawContext&, ContactLaw& law) { law.rolling = &kernel; }
+std::vector<Field> fields(bool) {
+  return {};
+}
+void configure(const ParamValues&, const LawContext&, ContactLaw& law) {
+  law.rolling = &kernel;
+}
 
 }  // namespace
 

@@ -10,10 +10,10 @@ namespace silodem {
 
 // ---- normal -------------------------------------------------------------------------------
 struct NormalParams {
-  double stiffness = 0.0;       // k_n, N/m
-  double restitution = 1.0;     // e actually used (after the CG policy)
-  double damping_ratio = 0.0;   // zeta(e); eta_n = 2 zeta sqrt(m_eff k_n)
-  bool clip_attractive = false; // clip the attractive dashpot force at the end of a contact
+  double stiffness = 0.0;        // k_n, N/m
+  double restitution = 1.0;      // e actually used (after the CG policy)
+  double damping_ratio = 0.0;    // zeta(e); eta_n = 2 zeta sqrt(m_eff k_n)
+  bool clip_attractive = false;  // clip the attractive dashpot force at the end of a contact
 };
 struct NormalForce {
   double elastic = 0.0;  // k_n delta_n (repulsive > 0)
@@ -25,10 +25,11 @@ using NormalKernel = NormalForce (*)(const NormalParams&, const ContactGeometry&
 
 // ---- tangential ---------------------------------------------------------------------------
 struct TangentialParams {
-  double stiffness = 0.0;        // k_t, N/m
-  double damping_fraction = 0.0; // eta_t / eta_n
-  double friction = 0.0;         // mu_s
-  bool cap_sees_cohesion = false;  // Coulomb cap on |F_el + F_damp - F_coh| instead of |F_el + F_damp|
+  double stiffness = 0.0;         // k_t, N/m
+  double damping_fraction = 0.0;  // eta_t / eta_n
+  double friction = 0.0;          // mu_s
+  bool cap_sees_cohesion =
+      false;  // Coulomb cap on |F_el + F_damp - F_coh| instead of |F_el + F_damp|
 };
 // Returns the tangential force on i; updates the spring.
 using TangentialKernel = Vec3 (*)(const TangentialParams&, const ContactGeometry&, double eta_n,
@@ -36,10 +37,10 @@ using TangentialKernel = Vec3 (*)(const TangentialParams&, const ContactGeometry
 
 // ---- rolling ------------------------------------------------------------------------------
 struct RollingParams {
-  double friction = 0.0;            // mu_r
-  double stiffness_factor = 2.25;   // EPSD: k_r = factor k_n mu_r^2 R_eff^2 (Ai et al. 2011)
-  double damping_fraction = 0.3;    // EPSD: eta_r, fraction of critical rolling damping
-  bool limit_sees_cohesion = false; // EPSD limit on |F_n - F_coh| instead of |F_n|
+  double friction = 0.0;             // mu_r
+  double stiffness_factor = 2.25;    // EPSD: k_r = factor k_n mu_r^2 R_eff^2 (Ai et al. 2011)
+  double damping_fraction = 0.3;     // EPSD: eta_r, fraction of critical rolling damping
+  bool limit_sees_cohesion = false;  // EPSD limit on |F_n - F_coh| instead of |F_n|
 };
 struct RollingTorque {
   Vec3 on_i, on_j;

@@ -41,8 +41,10 @@ std::vector<Field> fields(bool) {
           .with_default(0.5)
           .at_least(0)
           .at_most(10),
-      Field::number("friction", "sliding friction coefficient mu_s").needed().at_least(0).at_most(
-          10),
+      Field::number("friction", "sliding friction coefficient mu_s")
+          .needed()
+          .at_least(0)
+          .at_most(10),
       Field::flag("cap_sees_cohesion",
                   "Coulomb cap on the net normal force (elastic + damping - cohesive) instead of "
                   "elastic + damping (MFIX: false)",

@@ -9,8 +9,12 @@ Vec3 kernel(const TangentialParams&, const ContactGeometry&, double, double, Vec
   spring = Vec3{};
   return {};
 }
-std::vector<Field> fields(bool) { return {}; }
-void configure(const ParamValues&, const LawContext&, ContactLaw& law) { law.tangential = &kernel; }
+std::vector<Field> fields(bool) {
+  return {};
+}
+void configure(const ParamValues&, const LawContext&, ContactLaw& law) {
+  law.tangential = &kernel;
+}
 
 }  // namespace
 

@@ -48,8 +48,9 @@ TEST(VerletList, RebuildOnlyAfterHalfSkin) {
 }
 
 // Sphere b pressed onto a fixed sphere a and sheared by a force below the Coulomb limit, without
-// rolling, so that the tangential spring holds a static load; a third sphere far away. Returns the tangential spring of the pair and the
-// positions after `steps`, optionally forcing rebuilds or removing the far sphere mid-way.
+// rolling, so that the tangential spring holds a static load; a third sphere far away. Returns the
+// tangential spring of the pair and the positions after `steps`, optionally forcing rebuilds or
+// removing the far sphere mid-way.
 struct Loaded {
   Vec3 spring, xa, xb;
 };

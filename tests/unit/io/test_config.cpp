@@ -52,7 +52,8 @@ void expect_error(const std::string& text, const std::string& needle_line,
   EXPECT_EQ(msg.find('\n'), std::string::npos) << "one line: " << msg;
   const std::string where = "case.toml:" + std::to_string(line_of(text, needle_line)) + ":";
   EXPECT_NE(msg.find(where), std::string::npos) << "expected " << where << " in: " << msg;
-  for (const auto& p : parts) EXPECT_NE(msg.find(p), std::string::npos) << "expected '" << p << "' in: " << msg;
+  for (const auto& p : parts)
+    EXPECT_NE(msg.find(p), std::string::npos) << "expected '" << p << "' in: " << msg;
 }
 
 TEST(Config, BaseCaseLoadsAndDerives) {
@@ -68,13 +69,15 @@ TEST(Config, BaseCaseLoadsAndDerives) {
 
 TEST(Config, UnknownKeyWithSuggestion) {
   const std::string t = replace(base(), "moisture_percent = 8.8", "moisture_pecent = 8.8");
-  expect_error(t, "moisture_pecent", {"coal[0].moisture_pecent", "did you mean 'moisture_percent'"});
+  expect_error(t, "moisture_pecent",
+               {"coal[0].moisture_pecent", "did you mean 'moisture_percent'"});
 }
 
 TEST(Config, UnknownSectionAndLaw) {
   expect_error(replace(base(), "[simulation]", "[simulaton]"), "[simulaton]",
                {"simulaton", "did you mean 'simulation'"});
-  const std::string t = replace(base(), "law = \"mfix\", friction = 0.6", "law = \"epsdd\", friction = 0.6");
+  const std::string t =
+      replace(base(), "law = \"mfix\", friction = 0.6", "law = \"epsdd\", friction = 0.6");
   expect_error(t, "epsdd", {"rolling.law", "epsdd", "did you mean 'epsd'"});
 }
 
@@ -83,7 +86,8 @@ TEST(Config, MissingRequiredKey) {
   const std::string msg = error_of(t);
   EXPECT_NE(msg.find("coal[0].true_density_kg_m3"), std::string::npos) << msg;
   EXPECT_NE(msg.find("missing required key"), std::string::npos) << msg;
-  EXPECT_NE(msg.find("case.toml:" + std::to_string(line_of(base(), "[[coal]]"))), std::string::npos) << msg;
+  EXPECT_NE(msg.find("case.toml:" + std::to_string(line_of(base(), "[[coal]]"))), std::string::npos)
+      << msg;
 }
 
 TEST(Config, NegativeDiameter) {
@@ -102,11 +106,13 @@ TEST(Config, BulkDensityAboveTrueDensity) {
 }
 
 TEST(Config, KBelowOne) {
-  expect_error(replace(base(), "k = 3", "k = 0.5"), "k = 0.5", {"coarse_graining.k", "0.5", "[1, 100]"});
+  expect_error(replace(base(), "k = 3", "k = 0.5"), "k = 0.5",
+               {"coarse_graining.k", "0.5", "[1, 100]"});
 }
 
 TEST(Config, WrongType) {
-  expect_error(replace(base(), "k = 3", "k = \"three\""), "k = \"three\"", {"coarse_graining.k", "must be a number"});
+  expect_error(replace(base(), "k = 3", "k = \"three\""), "k = \"three\"",
+               {"coarse_graining.k", "must be a number"});
 }
 
 TEST(Config, OverlappingPlacedParticles) {
@@ -116,8 +122,10 @@ TEST(Config, OverlappingPlacedParticles) {
 
 TEST(Config, TU7_TimeStepGuard) {
   // t_col,min here is the k = 3 pair at k_n = 1e5: 1.921e-4 s; t_col / 10 = 1.92e-5 s.
-  const std::string too_big = replace(base(), "end_time = 0.01", "end_time = 0.01\ntime_step = 2.5e-5");
-  expect_error(too_big, "time_step = 2.5e-5", {"simulation.time_step", "2.5e-05", "1.921e-05", "t_col"});
+  const std::string too_big =
+      replace(base(), "end_time = 0.01", "end_time = 0.01\ntime_step = 2.5e-5");
+  expect_error(too_big, "time_step = 2.5e-5",
+               {"simulation.time_step", "2.5e-05", "1.921e-05", "t_col"});
   const std::string ok = replace(base(), "end_time = 0.01", "end_time = 0.01\ntime_step = 9.6e-6");
   EXPECT_EQ(error_of(ok), "");  // dt <= t_col / 20 passes
 }
@@ -125,7 +133,8 @@ TEST(Config, TU7_TimeStepGuard) {
 TEST(Config, RestitutionPolicyEnergyRefusesPaperValue) {
   const std::string t = replace(base(), "k = 3", "k = 3\nrestitution_policy = \"energy\"");
   expect_error(t, "restitution = 0.1 }", {"restitution", "no real value"});
-  const std::string clamped = replace(base(), "k = 3", "k = 3\nrestitution_policy = \"energy-clamped\"");
+  const std::string clamped =
+      replace(base(), "k = 3", "k = 3\nrestitution_policy = \"energy-clamped\"");
   const Case c = config::load_case_text(clamped, "case.toml");
   const CaseReport r = derive_case(c);
   EXPECT_DOUBLE_EQ(r.coals[0].restitution.value, 0.01);

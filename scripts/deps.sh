@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs what silodem needs from Debian 12's packages (as root; uses sudo otherwise).
+#   g++ cmake make          build
+#   libtomlplusplus-dev     case files (TOML)
+#   libcli11-dev            command line
+#   libfmt-dev              formatting
+#   libgtest-dev            tests (GoogleTest)
+#   libbenchmark-dev        benchmarks (Google Benchmark)
+#   clang-format            format check in CI
+#   python3                 end-to-end test scripts (stdlib only)
+set -euo pipefail
+pkgs=(g++ cmake make libtomlplusplus-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
+      clang-format python3)
+missing=()
+for p in "${pkgs[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "deps: all installed"
+  exit 0
+fi
+SUDO=""
+[ "$(id -u)" -eq 0 ] || SUDO="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update
+$SUDO apt-get install -y --no-install-recommends "${missing[@]}"
