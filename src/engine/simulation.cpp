@@ -38,6 +38,11 @@ void Simulation::add_wall(std::unique_ptr<Wall> w) {
   rebuild_pending_ = true;
 }
 
+void Simulation::set_wall_enabled(std::size_t index, bool on) {
+  walls_.at(index)->enabled = on;
+  rebuild_pending_ = true;
+}
+
 void Simulation::initialize() {
   update_neighbors();
   compute_forces();

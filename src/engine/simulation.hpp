@@ -39,6 +39,8 @@ class Simulation {
   void set_gravity(const Vec3& g) { s_.gravity = g; }
   void add_wall(std::unique_ptr<Wall> w);
   const WallList& walls() const { return walls_; }
+  // Switch a wall on or off (e.g. open a valve); its contacts end with it.
+  void set_wall_enabled(std::size_t index, bool on);
   void add_hook(Hook h) { hooks_.push_back(std::move(h)); }
 
   // Builds the neighbour list and the forces of the initial state. Called by step() if needed.

@@ -40,11 +40,11 @@ RestitutionCg restitution_cg(double e, const CoarseGraining& cg) {
       r.value = e;
       return r;
     case RestitutionPolicy::Energy:
-      if (r.argument < 0.0) {
+      if (r.argument <= 0.0) {  // = 0 gives e_cg = 0: ln 0, no finite damping
         r.defined = false;
         r.value = 0.0;
         r.warning = fmt::format(
-            "Eq. 11 has no real value for e = {:g} at k = {:g} (1 + (e^2 - 1) k = {:.4g} < 0; "
+            "Eq. 11 has no real value for e = {:g} at k = {:g} (1 + (e^2 - 1) k = {:.4g} <= 0; "
             "defined only for k <= {:.4g}); choose restitution_policy = \"energy-clamped\" or "
             "\"none\"",
             e, cg.k, r.argument, 1.0 / (1.0 - e * e));
@@ -54,7 +54,7 @@ RestitutionCg restitution_cg(double e, const CoarseGraining& cg) {
       return r;
     case RestitutionPolicy::EnergyClamped: {
       const double raw = r.argument > 0.0 ? std::sqrt(r.argument) : 0.0;
-      r.defined = r.argument >= 0.0;
+      r.defined = r.argument > 0.0;
       if (raw < cg.restitution_floor) {
         r.clamped = true;
         r.value = cg.restitution_floor;

@@ -7,7 +7,7 @@
 namespace silodem {
 
 enum class RestitutionPolicy {
-  Energy,         // Eq. 11, refused where 1 + (e^2 - 1) k < 0
+  Energy,         // Eq. 11, refused where 1 + (e^2 - 1) k <= 0
   EnergyClamped,  // Eq. 11, clamped to a floor e_min with a warning where undefined/below
   None,           // e_cg = e (Table 1's value applied to the CG particles)
 };
@@ -21,8 +21,8 @@ struct CoarseGraining {
   RestitutionPolicy restitution_policy = RestitutionPolicy::None;
   double restitution_floor = 0.01;  // e_min for EnergyClamped
 
-  double diameter(double d) const { return k * d; }      // Eq. 1
-  double mass(double m) const { return k * k * k * m; }  // Eq. 2
+  double diameter(double d) const { return k * d; }      // Eq. 2
+  double mass(double m) const { return k * k * k * m; }  // Eq. 1
   double cohesion_force(double f_l) const;               // Eq. 13 with exponent alpha
 };
 

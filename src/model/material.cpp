@@ -25,8 +25,10 @@ double sphere_mass(double diameter, double density) {
 
 CoalDerived derive(const CoalProperties& c) {
   CoalDerived d;
-  d.porosity = porosity(c.bulk_density, c.true_density, c.moisture);
-  d.tensile_strength = tensile_strength(c.cohesion, c.friction_angle);
+  // Without the measured properties (cohesion_force_n given instead) Eq. 15-16 are not defined.
+  const bool measured = c.bulk_density > 0.0 && c.friction_angle > 0.0;
+  d.porosity = measured ? porosity(c.bulk_density, c.true_density, c.moisture) : 0.0;
+  d.tensile_strength = measured ? tensile_strength(c.cohesion, c.friction_angle) : 0.0;
   d.cohesion_force =
       c.cohesion_force_override
           ? *c.cohesion_force_override

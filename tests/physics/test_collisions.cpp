@@ -4,7 +4,9 @@
 // with clipping, the Schwager & Poeschel (2007) value computed in closed form here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "helpers.hpp"
 
@@ -19,7 +21,8 @@ struct Outcome {
 
 // Head-on: particle 0 (mass m0) moves at +v towards particle 1 (mass m0 * ratio) at rest, or
 // towards a wall when ratio == 0. No gravity. Crossing times interpolated linearly.
-Outcome collide(double e, double ratio, bool clip, bool force_zero_ends, double dt_factor = 50) {
+Outcome collide(double e, double ratio, bool clip, bool force_zero_ends, double dt_factor = 50,
+                double phase = 0.3) {
   const double kn = 1e4, r = 5e-3, rho = 1500, v = 0.5;
   const double m0 = test::sphere_mass_of(2 * r, rho);
   test::Laws l;
@@ -35,7 +38,8 @@ Outcome collide(double e, double ratio, bool clip, bool force_zero_ends, double 
   s.threads = 1;
   Simulation sim(std::move(model), s);
   auto& p = sim.particles();
-  const double gap = 0.1 * r;
+  // The contact starts `phase` of a step after a step boundary.
+  const double gap = (10.0 + phase) * v * s.dt;
   if (wall) {
     sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{-1, 0, 0}));
     p.add({-r - gap, 0, 0}, {v, 0, 0}, {}, r, m0, 0);
@@ -73,12 +77,35 @@ Outcome collide(double e, double ratio, bool clip, bool force_zero_ends, double 
   return {-v_out / v_in, t_end - t_start, t_col, max_ov};
 }
 
+// Restitution and duration over 20 contact phases (where in a step the contact starts). At
+// dt = t_col/50 most phases measure e within 0.5%; a few lose up to 9% at e = 0.1: the contact
+// ends just after a step boundary, and the attractive dashpot force (-eta v_out, MFIX does not
+// clip) then acts for a whole step. That error is O(dt) and is gone at dt = t_col/1000.
+struct Sweep {
+  double median, worst;  // of e_meas / e
+  double worst_duration;  // of |duration / t_col - 1|
+};
+Sweep sweep(double e, double ratio, double dt_factor) {
+  std::vector<double> r;
+  double worst = 1.0, worst_t = 0.0;
+  for (int k = 0; k < 20; ++k) {
+    const Outcome o = collide(e, ratio, false, false, dt_factor, k / 20.0);
+    r.push_back(o.restitution / e);
+    if (std::fabs(o.restitution / e - 1) > std::fabs(worst - 1)) worst = o.restitution / e;
+    worst_t = std::max(worst_t, std::fabs(o.duration / o.t_col - 1.0));
+  }
+  std::sort(r.begin(), r.end());
+  return {0.5 * (r[9] + r[10]), worst, worst_t};
+}
+
 TEST(Collisions, TP3_HeadOnParticleParticle) {
   for (double ratio : {1.0, 3.0}) {
     for (double e : {0.1, 0.5, 0.9}) {
-      const Outcome o = collide(e, ratio, false, false);
-      EXPECT_NEAR(o.restitution / e, 1.0, 0.005) << "e = " << e << " ratio " << ratio;
-      EXPECT_NEAR(o.duration / o.t_col, 1.0, 0.02) << "e = " << e << " ratio " << ratio;
+      const Sweep coarse = sweep(e, ratio, 50);
+      EXPECT_NEAR(coarse.median, 1.0, 0.005) << "e = " << e << " ratio " << ratio;
+      EXPECT_NEAR(coarse.worst, 1.0, 0.10) << "e = " << e << " ratio " << ratio;
+      EXPECT_LT(coarse.worst_duration, 0.02) << "e = " << e << " ratio " << ratio;
+      EXPECT_NEAR(sweep(e, ratio, 1000).worst, 1.0, 0.005) << "e = " << e << " ratio " << ratio;
     }
   }
 }
@@ -92,9 +119,11 @@ TEST(Collisions, TP3_UndampedMaximumOverlap) {
 
 TEST(Collisions, TP4_HeadOnParticleWall) {
   for (double e : {0.1, 0.5, 0.9}) {
-    const Outcome o = collide(e, 0.0, false, false);
-    EXPECT_NEAR(o.restitution / e, 1.0, 0.005) << "e = " << e;
-    EXPECT_NEAR(o.duration / o.t_col, 1.0, 0.02) << "e = " << e;
+    const Sweep coarse = sweep(e, 0.0, 50);
+    EXPECT_NEAR(coarse.median, 1.0, 0.005) << "e = " << e;
+    EXPECT_NEAR(coarse.worst, 1.0, 0.10) << "e = " << e;
+    EXPECT_LT(coarse.worst_duration, 0.02) << "e = " << e;
+    EXPECT_NEAR(sweep(e, 0.0, 1000).worst, 1.0, 0.005) << "e = " << e;
   }
 }
 

@@ -19,6 +19,9 @@ bool key_less(std::uint64_t a1, std::uint64_t b1, std::uint64_t a2, std::uint64_
 }  // namespace
 
 void VerletList::stash_history(const ParticleStore& p) {
+  // Already stashed since the last build (e.g. two removals in one step): the list no longer
+  // matches the particle indices, and the stash already holds everything.
+  if (stashed_) return;
   saved_pairs_.clear();
   saved_walls_.clear();
   const std::size_t n = offset.empty() ? 0 : offset.size() - 1;
@@ -100,7 +103,7 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
     WallHit hit;
     const double limit = p.radius[i] * (1.0 + 2.0 * reach_over_d) + w_skin;
     int c = 0;
-    for (const auto& w : walls) c += w->near(p.x[i], limit, hit) ? 1 : 0;
+    for (const auto& w : walls) c += (w->enabled && w->near(p.x[i], limit, hit)) ? 1 : 0;
     wcount[i + 1] = c;
   }
   wall_offset.assign(n + 1, 0);
@@ -112,7 +115,7 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
     const double limit = p.radius[i] * (1.0 + 2.0 * reach_over_d) + w_skin;
     int e = wall_offset[i];
     for (std::size_t k = 0; k < walls.size(); ++k)
-      if (walls[k]->near(p.x[i], limit, hit)) wall[e++] = int(k);
+      if (walls[k]->enabled && walls[k]->near(p.x[i], limit, hit)) wall[e++] = int(k);
   }
 
   // Re-attach the history by stable ids.

@@ -7,11 +7,15 @@ namespace silodem {
 
 WallEntry plane_wall_entry();
 WallEntry box_wall_entry();
+WallEntry frustum_wall_entry();
+WallEntry cylinder_wall_entry();
 
 const std::vector<WallEntry>& wall_types() {
   static const std::vector<WallEntry> table = {
       plane_wall_entry(),
       box_wall_entry(),
+      frustum_wall_entry(),
+      cylinder_wall_entry(),
   };
   return table;
 }

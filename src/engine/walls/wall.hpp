@@ -23,6 +23,7 @@ class Wall {
   virtual bool near(const Vec3& centre, double limit, WallHit& hit) const = 0;
   virtual Vec3 velocity() const { return {}; }
   virtual std::string describe() const = 0;
+  bool enabled = true;  // a disabled wall (an opened valve) takes part in no contact
 };
 
 using WallList = std::vector<std::unique_ptr<Wall>>;

@@ -210,8 +210,10 @@ static std::string field_row(const Field& f) {
   } else if (f.kind == FieldKind::Number || f.kind == FieldKind::Integer) {
     range = f.range_text();
   }
+  std::string doc;  // a '|' in the text would end the table cell
+  for (char ch : f.doc) doc += ch == '|' ? std::string("\\|") : std::string(1, ch);
   return fmt::format("| `{}` | {} | {} | {} | {} | {} |\n", f.key, type,
-                     f.unit.empty() ? "-" : f.unit, def, range.empty() ? "-" : range, f.doc);
+                     f.unit.empty() ? "-" : f.unit, def, range.empty() ? "-" : range, doc);
 }
 
 static const char* kHeader =

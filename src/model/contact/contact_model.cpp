@@ -78,7 +78,7 @@ ContactResult evaluate_contact(const ContactLaw& law, const ContactGeometry& g, 
   const NormalForce fn = law.normal(law.np, g);
   r.normal = fn.total;
   const double cap =
-      law.tp.cap_sees_cohesion ? std::fabs(fn.total - r.cohesion) : std::fabs(fn.total);
+      law.tp.cap_sees_cohesion ? std::max(0.0, fn.total - r.cohesion) : std::fabs(fn.total);
   const Vec3 ft = law.tangential(law.tp, g, fn.eta, cap, s.tangential, dt);
   // Torque of the tangential force about each centre: r x F with r = -arm_i n (on i) and
   // r = +arm_j n with force -F_t (on j); both equal -arm (n x F_t).

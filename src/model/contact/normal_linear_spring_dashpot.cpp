@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Linear spring-dashpot normal force (paper Eq. 3-4; PHYSICS.md 2):
+// Linear spring-dashpot normal force (paper Eq. 7; PHYSICS.md 2):
 //   F_n = (k_n delta_n + eta_n d(delta_n)/dt) n,  eta_n = 2 zeta sqrt(m_eff k_n),
 //   zeta = |ln e| / sqrt(pi^2 + ln^2 e)  (Eq. 9/12 with E2 and E5 applied).
 // The dashpot may pull near the end of a contact; `clip_attractive` sets the total to zero then
@@ -54,7 +54,7 @@ void configure(const ParamValues& v, const LawContext& ctx, ContactLaw& law) {
 
 LawEntry normal_linear_spring_dashpot_entry() {
   return {"linear_spring_dashpot", Slot::Normal,
-          "linear spring + dashpot from restitution (Eq. 3-4, 9-12; E2, E3, E5)", &fields,
+          "linear spring + dashpot from restitution (Eq. 7, 9-12; E2, E3, E5)", &fields,
           &configure};
 }
 

@@ -6,6 +6,7 @@
 //   M_d = -eta_r 2 sqrt(I_r k_r) omega_r while |M_k| is below the limit, else 0 (Ai Eq. 17, f = 0)
 // with omega_r the tangential part of omega_i - omega_j. The torque acts on i and (opposite) on j.
 // Unlike constant-torque laws it holds a sphere at rest without creep or chatter.
+#include <algorithm>
 #include <cmath>
 
 #include "model/contact/contact_history.hpp"
@@ -22,8 +23,10 @@ RollingTorque kernel(const RollingParams& p, const ContactGeometry& g, const Nor
   w -= dot(w, g.n) * g.n;
   rotate_into_tangent_plane(spring, g.n);
   spring -= k_r * dt * w;
-  const double normal = p.limit_sees_cohesion ? fn.total - cohesion : fn.total;
-  const double limit = p.friction * g.r_eff * std::fabs(normal);
+  // With the switch: the net compressive force, zero for a bond under tension.
+  const double normal =
+      p.limit_sees_cohesion ? std::max(0.0, fn.total - cohesion) : std::fabs(fn.total);
+  const double limit = p.friction * g.r_eff * normal;
   const double m = norm(spring);
   Vec3 torque;
   if (m >= limit) {

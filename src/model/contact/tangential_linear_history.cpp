@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
-// Tangential spring with history, dashpot and Coulomb cap (paper Eq. 5-8; PHYSICS.md 2, E6).
+// Tangential spring with history, dashpot and Coulomb cap (paper Eq. 8; PHYSICS.md 2, E6).
 // This file is the reference example of a contact law: checked parameters, a pure kernel, and
 // the equation cited where it is implemented.
 //   spring  xi <- rotate(xi) + v_t dt            (accumulated tangential displacement)
 //   F_t     = -k_t xi - eta_t v_t,  eta_t = (eta_t/eta_n) eta_n   (MFIX default 0.5)
-//   |F_t|  <= mu_s |F_n|, F_n = elastic + damping normal force (MFIX); with cap_sees_cohesion the
-//             cap uses the net normal force F_n - F_coh instead.
-//   on slip the spring is reset so that the spring and dashpot give the capped force
-//             (MFIX calc_force_dem: PFT = -(FT - FTS2)/KT).
+//   |F_t|  <= mu_s F_n, F_n = |elastic + damping normal force| (MFIX); with cap_sees_cohesion the
+//             cap uses the net compressive force max(0, F_n - F_coh) instead.
+//   on slip F_t = mu_s F_n along the trial force and the spring is reset to the cap, xi = -F_t/k_t
+//             (PHYSICS.md E6: "resets the spring to mu |FN| / kt on slip").
 #include <cmath>
 
 #include "model/contact/contact_history.hpp"
@@ -21,12 +21,12 @@ Vec3 kernel(const TangentialParams& p, const ContactGeometry& g, double eta_n, d
   rotate_into_tangent_plane(spring, g.n);
   spring += g.v_t * dt;
   const double eta_t = p.damping_fraction * eta_n;
-  Vec3 f = -p.stiffness * spring - eta_t * g.v_t;  // Eq. 5-7
+  Vec3 f = -p.stiffness * spring - eta_t * g.v_t;  // Eq. 8, trial force
   const double f_mag = norm(f);
   const double cap = p.friction * cap_force;  // Eq. 8 (Coulomb)
   if (f_mag > cap) {
     f *= f_mag > 0.0 ? cap / f_mag : 0.0;
-    spring = -(f + eta_t * g.v_t) / p.stiffness;
+    spring = -f / p.stiffness;
   }
   return f;
 }
@@ -65,7 +65,7 @@ void configure(const ParamValues& v, const LawContext&, ContactLaw& law) {
 
 LawEntry tangential_linear_history_entry() {
   return {"linear_history", Slot::Tangential,
-          "spring with history + dashpot, Coulomb cap (Eq. 5-8; E6 as MFIX)", &fields, &configure};
+          "spring with history + dashpot, Coulomb cap (Eq. 8; E6 as MFIX)", &fields, &configure};
 }
 
 }  // namespace silodem

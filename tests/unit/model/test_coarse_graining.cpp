@@ -46,6 +46,15 @@ TEST(Restitution, TU3_NoneKeepsInput) {
   EXPECT_TRUE(r.warning.empty());
 }
 
+TEST(Restitution, ZeroRadicandIsRefusedNotNaN) {
+  // e = 0.5 at k = 4/3 gives 1 + (e^2 - 1) k = 0 exactly: e_cg = 0 has no finite damping.
+  const RestitutionCg r = restitution_cg(0.5, cg_of(4.0 / 3.0, RestitutionPolicy::Energy));
+  EXPECT_FALSE(r.defined);
+  const RestitutionCg c = restitution_cg(0.5, cg_of(4.0 / 3.0, RestitutionPolicy::EnergyClamped));
+  EXPECT_TRUE(c.clamped);
+  EXPECT_TRUE(std::isfinite(normal_damping(1e4, 1e-3, c.value)));
+}
+
 TEST(Restitution, KMaxBoundary) {
   // Eq. 11 exists only for k <= 1 / (1 - e^2): 5.263 for e = 0.9.
   EXPECT_TRUE(restitution_cg(0.9, cg_of(5.26, RestitutionPolicy::Energy)).defined);

@@ -91,11 +91,11 @@ TEST(TangentialHistory, CoulombCapAndSpringReset) {
   const ContactLaw law = test::law_of(l, false);
   const ContactGeometry g = geometry(1e-4, 0.0, {0, 0.2, 0});
   Vec3 spring{0, 1e-3, 0};  // far beyond the cap
-  const double cap_force = 2.0;
-  const Vec3 f = law.tangential(law.tp, g, 0.0, cap_force, spring, 1e-5);
+  const double cap_force = 2.0, eta_n = 0.5;
+  const Vec3 f = law.tangential(law.tp, g, eta_n, cap_force, spring, 1e-5);
   EXPECT_NEAR(norm(f), 0.3 * 2.0, 1e-12);
   EXPECT_LT(f.y, 0.0);
-  // Reset so that spring (+ dashpot, here zero) gives exactly the capped force (MFIX).
+  // E6: on slip the spring is reset to the cap, k_t |xi| = mu F_n, along the force.
   EXPECT_NEAR(-law.tp.stiffness * spring.y, f.y, 1e-12);
 }
 
@@ -197,6 +197,25 @@ TEST(RollingEpsd, LimitTorqueAndOppositeOnPartner) {
   EXPECT_NEAR(norm(spring), 0.2 * g.r_eff * 1.0, 1e-15);  // saturated at mu_r R_eff |F_n|
   EXPECT_LT(t.on_i.y, 0.0);
   EXPECT_NEAR(t.on_j.y, -t.on_i.y, 1e-18);
+}
+
+TEST(SeesCohesion, TensionGivesNoFrictionOrRollingCapacity) {
+  // A bond pulled apart (contact force 0.05 N < cohesion 0.1 N): with the switches on, the net
+  // normal force is tensile and the Coulomb cap and rolling limit are zero, not |F_n - F_coh|.
+  Laws l;
+  l.tangential = "linear_history";
+  l.tangential_p = {{"friction", 0.5}, {"cap_sees_cohesion", 1.0}};
+  l.rolling = "epsd";
+  l.rolling_p = {{"friction", 0.2}, {"limit_sees_cohesion", 1.0}};
+  l.cohesion = "overlap-only";
+  l.normal_p = {{"stiffness", 500.0}, {"restitution", 0.5}};
+  const ContactLaw law = test::law_of(l, false, 0.1, 0.1);
+  ContactGeometry g = geometry(1e-4, 0.0, {0, 0.01, 0});  // k_n delta = 0.05 N
+  g.omega_i = {0, 50.0, 0};
+  ContactState s;
+  const ContactResult r = evaluate_contact(law, g, s, 1e-4);
+  EXPECT_NEAR(r.force_i.y, 0.0, 1e-15);
+  EXPECT_NEAR(norm(s.rolling), 0.0, 1e-15);
 }
 
 TEST(RollingMfix, TorqueOpposesOwnSpinWithDiameter) {

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Axisymmetric walls about a vertical axis through (cx, cy), described in the meridian plane
+// (r, z). A frustum face is the surface swept by the segment (r0, z0) -> (r1, z1) (a cylinder
+// when r0 == r1, a disk when z0 == z1); it acts only where the particle projects onto the segment,
+// so it has no phantom extension beyond its ends. Ends that a particle can touch from the inside
+// (the outlet rim, any convex bend) are circle edges, a wall of their own.
+#pragma once
+#include <vector>
+
+#include "engine/walls/wall.hpp"
+
+namespace silodem {
+
+struct Meridian {
+  double r = 0.0, z = 0.0;
+};
+
+class FrustumFace final : public Wall {
+ public:
+  // `inner`: particles are on the axis side of the surface (inside a silo).
+  FrustumFace(double cx, double cy, Meridian a, Meridian b, bool inner);
+  bool near(const Vec3& c, double limit, WallHit& hit) const override;
+  std::string describe() const override;
+
+ private:
+  double cx_, cy_;
+  Meridian a_;
+  double ur_, uz_, len_;  // unit direction a -> b and length
+  double nr_, nz_;        // unit normal towards the particle side
+};
+
+class CircleEdge final : public Wall {
+ public:
+  // The circle of radius `radius` at height z about the axis. A particle feels it only inside the
+  // edge's own region: for every adjacent face, given by its unit direction (dr, dz) pointing away
+  // from the edge along that face, the particle must lie behind the face's end.
+  CircleEdge(double cx, double cy, Meridian at, std::vector<Meridian> adjacent_directions);
+  bool near(const Vec3& c, double limit, WallHit& hit) const override;
+  std::string describe() const override;
+
+ private:
+  double cx_, cy_;
+  Meridian at_;
+  std::vector<Meridian> adjacent_;
+};
+
+}  // namespace silodem

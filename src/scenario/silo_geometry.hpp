@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// The laboratory silo (PHYSICS.md 5): a conical hopper from the outlet (z = 0) up to the cylinder,
+// a cylinder above it, the outlet rim as an edge, and a valve plate under the outlet. Axis z,
+// centred at x = y = 0.
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "engine/walls/wall.hpp"
+
+namespace silodem {
+
+struct SiloGeometry {
+  double outlet_diameter = 0.050;    // m
+  double cone_height = 0.633;        // m
+  double cylinder_diameter = 0.468;  // m
+  double cylinder_height = 0.318;    // m (paper: 951 mm in all)
+  double valve_gap = 0.0;            // m, plate below the outlet plane
+
+  double outlet_radius() const { return 0.5 * outlet_diameter; }
+  double top_radius() const { return 0.5 * cylinder_diameter; }
+  double total_height() const { return cone_height + cylinder_height; }
+  double half_angle() const;        // rad, cone half-angle from the vertical
+  double radius_at(double z) const;  // wall radius at height z (outlet radius below z = 0)
+  // Volume inside the walls between heights z0 < z1 (>= 0).
+  double volume(double z0, double z1) const;
+};
+
+struct SiloWalls {
+  WallList walls;
+  std::size_t valve_index = 0;  // index of the valve plate in `walls`
+};
+
+// Cone face, cylinder face, outlet-rim edge and valve plate.
+SiloWalls make_silo_walls(const SiloGeometry& g);
+
+}  // namespace silodem
