@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #pragma once
 #include <string>
+#include <vector>
 
 namespace silodem::app {
 
@@ -8,10 +9,12 @@ struct RunOptions {
   std::string case_path;
   std::string out_dir;
   int threads = 0;
+  std::vector<std::string> overrides;  // --set key=value
 };
 
 int run_command(const RunOptions& o);
-int check_command(const std::string& case_path, bool json);
+int check_command(const std::string& case_path, bool json,
+                  const std::vector<std::string>& overrides);
 
 // Exit codes.
 inline constexpr int kExitOk = 0;

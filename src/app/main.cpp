@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
       ->required();
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: case file, else all)")
       ->check(CLI::Range(1, 1024));
+  run_cmd->add_option("--set", run.overrides,
+                      "override a case-file value, e.g. --set coarse_graining.k=4 (repeatable)");
 
   std::string check_path;
   bool json = false;
@@ -29,6 +31,8 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::ExistingFile);
   check_cmd->add_flag("--json", json, "print one JSON object");
+  std::vector<std::string> check_overrides;
+  check_cmd->add_option("--set", check_overrides, "override a case-file value (repeatable)");
 
   auto* docs_cmd =
       cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
@@ -41,7 +45,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*run_cmd) return app::run_command(run);
-    if (*check_cmd) return app::check_command(check_path, json);
+    if (*check_cmd) return app::check_command(check_path, json, check_overrides);
     if (*docs_cmd) {
       fmt::print("{}", config::markdown());
       return 0;

@@ -1,26 +1,61 @@
 // SPDX-License-Identifier: MIT
-// `silodem run CASE.toml --out DIR`: the generic case (walls + placed particles); writes the
-// trajectories asked for in [output] as CSV.
-#include <fmt/format.h>
-#include <unistd.h>
-#include <chrono>
+// `silodem run CASE.toml --out DIR`: a generic case (walls + placed particles, trajectories as
+// CSV) or a silo case (layered fill, discharge, outlet statistics, fill report, summary).
+#include <cmath>
 #include <filesystem>
+#include <fmt/format.h>
 #include <fstream>
+#include <sstream>
+#include <toml++/toml.h>
 
 #include "app/commands.hpp"
+#include "app/progress.hpp"
 #include "io/config/load.hpp"
 #include "io/csv.hpp"
 #include "io/report_json.hpp"
+#include "scenario/discharge.hpp"
+#include "scenario/layered_filling.hpp"
+#include "scenario/outlet_stats.hpp"
 
 namespace fs = std::filesystem;
 
 namespace silodem::app {
 namespace {
 
-std::vector<std::string> trajectory_columns() {
-  return {"step",   "t_s",    "id",     "coal",     "x_m",      "y_m",     "z_m",
-          "vx_m_s", "vy_m_s", "vz_m_s", "wx_rad_s", "wy_rad_s", "wz_rad_s"};
+void write_text(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.string() + ".partial";
+  {
+    std::ofstream o(tmp, std::ios::binary);
+    o << text;
+    if (!o) throw std::runtime_error("cannot write " + tmp.string());
+  }
+  fs::rename(tmp, path);
 }
+
+std::string to_json(const toml::table& t) {
+  std::ostringstream os;
+  os << toml::json_formatter{t} << "\n";
+  return os.str();
+}
+
+// Creates DIR (refusing a non-empty one) with a copy of the case and its derived numbers.
+fs::path prepare_out(const RunOptions& o, const Case& c, const CaseReport& report) {
+  const fs::path out(o.out_dir);
+  if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
+    throw InputError({}, "--out",
+                     fmt::format("'{}' exists and is not empty; refusing to overwrite (choose a "
+                                 "new directory)",
+                                 o.out_dir));
+  fs::create_directories(out);
+  fs::copy_file(o.case_path, out / "case.toml", fs::copy_options::overwrite_existing);
+  std::string overrides;
+  for (const auto& s : o.overrides) overrides += s + "\n";
+  if (!overrides.empty()) write_text(out / "overrides.txt", overrides);
+  write_text(out / "check.json", case_report_json(c, report));
+  return out;
+}
+
+// ---- generic case ---------------------------------------------------------------------------
 
 void write_rows(CsvWriter& w, const Simulation& sim, const std::vector<std::uint64_t>& ids) {
   const ParticleStore& p = sim.particles();
@@ -39,85 +74,182 @@ void write_rows(CsvWriter& w, const Simulation& sim, const std::vector<std::uint
   }
 }
 
-void write_text(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".partial";
-  {
-    std::ofstream o(tmp, std::ios::binary);
-    o << text;
-    if (!o) throw std::runtime_error("cannot write " + tmp.string());
+int run_generic(const RunOptions& o, const Case& c, const CaseReport& report, ContactModel model) {
+  auto sim = build_simulation(c, report, std::move(model), o.threads);
+  const fs::path out = prepare_out(o, c, report);
+  CsvWriter traj((out / "trajectory.csv").string(),
+                 {"step", "t_s", "id", "coal", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s",
+                  "wx_rad_s", "wy_rad_s", "wz_rad_s"});
+  write_rows(traj, *sim, c.output.ids);
+  if (c.output.every > 0)
+    sim->add_hook({"trajectory", Phase::StepEnd, c.output.every,
+                   [&](Simulation& s) { write_rows(traj, s, c.output.ids); }});
+  ProgressLine progress;
+  const long total = std::max(1L, long(c.time.end_time / sim->dt() + 0.5));
+  std::string error;
+  try {
+    while (sim->time() + 0.5 * sim->dt() < c.time.end_time) {
+      sim->run_steps(std::min(100L, total - sim->step_count()));
+      const double frac = double(sim->step_count()) / double(total);
+      progress.show(fmt::format("t = {:.4f} / {:.4f} s  steps {}  particles {}  wall {:.0f} s  "
+                                "ETA {:.0f} s",
+                                sim->time(), c.time.end_time, sim->step_count(),
+                                sim->particles().size(), progress.elapsed(),
+                                progress.elapsed() * (1.0 / std::max(frac, 1e-9) - 1.0)));
+    }
+    if (c.output.every == 0 || sim->step_count() % c.output.every != 0)
+      write_rows(traj, *sim, c.output.ids);
+    traj.finish();
+  } catch (const SimulationError& e) {
+    error = e.what();
   }
-  fs::rename(tmp, path);
+  progress.finish();
+  toml::table summary{{"complete", error.empty()},
+                      {"error", error},
+                      {"steps", sim->step_count()},
+                      {"time_s", sim->time()},
+                      {"time_step_s", sim->dt()},
+                      {"particles", int64_t(sim->particles().size())},
+                      {"k", report.k},
+                      {"wall_time_s", progress.elapsed()}};
+  write_text(out / "summary.json", to_json(summary));
+  if (!error.empty()) {
+    fmt::print(stderr, "simulation error: {}\n", error);
+    return kExitSimulation;
+  }
+  fmt::print("wrote {} ({} steps, {:.1f} s wall)\n", out.string(), sim->step_count(),
+             progress.elapsed());
+  return kExitOk;
+}
+
+// ---- silo case ------------------------------------------------------------------------------
+
+void write_fill_csv(const fs::path& path, const Case& c, const FillReport& f) {
+  CsvWriter w(path.string(), {"segment", "coal", "z_low_m", "z_high_m", "z_low_settled_m",
+                              "z_high_settled_m", "particles", "mass_kg", "target_mass_kg",
+                              "bulk_density_kg_m3", "measured_bulk_density_kg_m3",
+                              "solid_fraction", "settle_time_s", "settled"});
+  for (const auto& s : f.segments) {
+    (void)c;
+    w.row({double(s.index), double(s.coal), s.z_low, s.z_high, s.z_low_settled, s.z_high_settled,
+           double(s.particles), s.mass, s.target_mass, s.bulk_density, s.bulk_density_measured,
+           s.solid_fraction, s.settle_time, s.settled ? 1.0 : 0.0});
+  }
+  w.finish();
+}
+
+void write_outlet_csv(const fs::path& path, const Case& c, const std::vector<OutletBin>& bins) {
+  std::vector<std::string> cols = {"t_start_s", "t_end_s", "mass_kg", "rate_kg_s", "cumulative_kg"};
+  for (const auto& coal : c.coals) cols.push_back("fraction_" + coal.name);
+  cols.push_back("calorific_kcal_kg");
+  CsvWriter w(path.string(), cols);
+  for (const auto& b : bins) {
+    std::vector<double> row = {b.t_start, b.t_end, b.mass, b.rate, b.cumulative};
+    row.insert(row.end(), b.fraction.begin(), b.fraction.end());
+    row.push_back(b.calorific);
+    w.row(row);
+  }
+  w.finish();
+}
+
+int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, ContactModel model) {
+  std::size_t valve = 0;
+  auto sim = build_silo_simulation(c, report, std::move(model), &valve, o.threads);
+  const fs::path out = prepare_out(o, c, report);
+  ProgressLine progress;
+  Random rng(c.time.seed);
+  std::string error;
+  FillReport fill;
+  DischargeResult dis;
+  bool filled = false;
+  try {
+    fill = fill_silo(*sim, c, report.segment_coal, rng, [&](const std::string& s) {
+      progress.show(fmt::format("fill {}  particles {}  wall {:.0f} s", s, sim->particles().size(),
+                                progress.elapsed()));
+    });
+    progress.finish();
+    filled = true;
+    write_fill_csv(out / "fill.csv", c, fill);
+    fmt::print("filled {} particles, {:.3f} kg in {:.0f} s wall ({:.2f} s simulated settling)\n",
+               fill.particles, fill.mass, progress.elapsed(), fill.settle_time);
+    for (const auto& w : fill.warnings) fmt::print(stderr, "warning: {}\n", w);
+    const double fill_wall = progress.elapsed();
+    dis = discharge(*sim, c.silo.geometry, valve, c.discharge, [&](const DischargeState& s) {
+      const double wall = progress.elapsed() - fill_wall;
+      const double frac = s.discharged / std::max(s.filled, 1e-30);
+      progress.show(fmt::format("discharge t = {:.2f} s  particles left {}  out {:.3f} kg ({:.1f}%)  "
+                                "rate {:.3f} kg/s  wall {:.0f} s  ETA {}",
+                                s.t, s.particles_left, s.discharged, 100 * frac, s.recent_rate,
+                                progress.elapsed(),
+                                frac > 0.01 ? fmt::format("{:.0f} s", wall * (1 / frac - 1)) : "?"));
+    });
+    progress.finish();
+  } catch (const SimulationError& e) {
+    progress.finish();
+    error = e.what();
+  }
+  std::vector<double> q;
+  for (const auto& coal : c.coals) q.push_back(coal.heating_value);
+  std::vector<OutletBin> bins;
+  if (filled && error.empty()) {
+    bins = outlet_bins(dis.outflow, c.discharge.bin, dis.end_time, q);
+    write_outlet_csv(out / "outlet.csv", c, bins);
+  }
+  // Mass ledger: filled = in silo + discharged + lost.
+  const double ledger_error =
+      std::fabs(dis.filled_mass - (dis.remaining_mass + dis.discharged_mass + dis.lost_mass));
+  std::vector<double> out_per_coal(c.coals.size(), 0.0);
+  for (const auto& r : dis.outflow) out_per_coal[std::size_t(r.coal)] += r.mass;
+  const char* end = dis.end == DischargeEnd::Emptied       ? "emptied"
+                    : dis.end == DischargeEnd::FlowStopped ? "flow stopped (no outflow for stall_time)"
+                                                           : "time limit";
+  toml::table summary{
+      {"complete", error.empty()},
+      {"error", error},
+      {"case", o.case_path},
+      {"scenario", c.fill.scenario},
+      {"filled_mass_kg", dis.filled_mass},
+      {"discharged_mass_kg", dis.discharged_mass},
+      {"remaining_mass_kg", dis.remaining_mass},
+      {"lost_mass_kg", dis.lost_mass},
+      {"particles_lost", dis.particles_lost},
+      {"mass_ledger_error_kg", ledger_error},
+      {"discharge_time_s", dis.discharge_time},
+      {"mean_rate_kg_s", dis.discharge_time > 0 ? dis.discharged_mass / dis.discharge_time : 0.0},
+      {"flow_stopped", dis.end == DischargeEnd::FlowStopped},
+      {"end", end},
+      {"particles_filled", dis.particles_filled},
+      {"fill_settle_time_s", fill.settle_time},
+      {"fill_max_boundary_offset_m", fill.max_boundary_offset},
+      {"outlet_mean_calorific_kcal_kg", mixture_calorific(out_per_coal, q)},
+      {"inventory_calorific_kcal_kg", report.inventory_calorific},
+      {"k", report.k},
+      {"time_step_s", sim->dt()},
+      {"discharge_steps", dis.steps},
+      {"wall_time_s", progress.elapsed()},
+  };
+  write_text(out / "summary.json", to_json(summary));
+  if (!error.empty()) {
+    fmt::print(stderr, "simulation error: {}\n", error);
+    return kExitSimulation;
+  }
+  fmt::print("{}: {:.3f} of {:.3f} kg out in {:.2f} s (mean {:.3f} kg/s), {:.3f} kg left, {:.3g} kg "
+             "lost; wrote {}\n",
+             end, dis.discharged_mass, dis.filled_mass, dis.discharge_time,
+             dis.discharge_time > 0 ? dis.discharged_mass / dis.discharge_time : 0.0,
+             dis.remaining_mass, dis.lost_mass, out.string());
+  return kExitOk;
 }
 
 }  // namespace
 
 int run_command(const RunOptions& o) {
   // Everything that can be wrong with the input is found before the output directory exists.
-  const Case c = config::load_case_file(o.case_path);
+  const Case c = config::load_case_file(o.case_path, o.overrides);
   ContactModel model;
   const CaseReport report = derive_case(c, &model);
-  auto sim = build_simulation(c, report, std::move(model), o.threads);
-
-  const fs::path out(o.out_dir);
-  if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
-    throw InputError({}, "--out",
-                     fmt::format("'{}' exists and is not empty; refusing to overwrite "
-                                 "(choose a new directory)",
-                                 o.out_dir));
-  fs::create_directories(out);
-  fs::copy_file(o.case_path, out / "case.toml", fs::copy_options::overwrite_existing);
-  write_text(out / "check.json", case_report_json(c, report));
-
-  CsvWriter traj((out / "trajectory.csv").string(), trajectory_columns());
-  write_rows(traj, *sim, c.output.ids);
-  if (c.output.every > 0) {
-    sim->add_hook({"trajectory", Phase::StepEnd, c.output.every,
-                   [&](Simulation& s) { write_rows(traj, s, c.output.ids); }});
-  }
-
-  const auto t0 = std::chrono::steady_clock::now();
-  auto last = t0;
-  const bool tty = isatty(STDERR_FILENO);
-  const long total = long(c.time.end_time / sim->dt() + 0.5);
-  int status = kExitOk;
-  std::string error;
-  try {
-    while (sim->time() + 0.5 * sim->dt() < c.time.end_time) {
-      sim->step();
-      const auto now = std::chrono::steady_clock::now();
-      if (now - last > std::chrono::seconds(tty ? 1 : 5)) {
-        last = now;
-        const double wall = std::chrono::duration<double>(now - t0).count();
-        const double frac = double(sim->step_count()) / double(std::max(total, 1L));
-        fmt::print(stderr,
-                   "{}t = {:.4f} / {:.4f} s  steps {}  particles {}  wall {:.0f} s  ETA {:.0f} s{}",
-                   tty ? "\r" : "", sim->time(), c.time.end_time, sim->step_count(),
-                   sim->particles().size(), wall, wall * (1.0 / std::max(frac, 1e-9) - 1.0),
-                   tty ? "" : "\n");
-      }
-    }
-    if (c.output.every == 0 || sim->step_count() % c.output.every != 0)
-      write_rows(traj, *sim, c.output.ids);
-    traj.finish();
-  } catch (const SimulationError& e) {
-    status = kExitSimulation;
-    error = e.what();
-  }
-  if (tty) fmt::print(stderr, "\n");
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  write_text(
-      out / "summary.json",
-      fmt::format("{{\n  \"complete\": {},\n  \"error\": \"{}\",\n  \"steps\": {},\n  "
-                  "\"time_s\": {:.17g},\n  \"time_step_s\": {:.17g},\n  \"particles\": {},\n  "
-                  "\"k\": {:g},\n  \"wall_time_s\": {:.3f}\n}}\n",
-                  status == kExitOk, error, sim->step_count(), sim->time(), sim->dt(),
-                  sim->particles().size(), report.k, wall));
-  if (status != kExitOk) {
-    fmt::print(stderr, "error: {}\n", error);
-    return status;
-  }
-  fmt::print("wrote {} ({} steps, {:.1f} s wall)\n", out.string(), sim->step_count(), wall);
-  return kExitOk;
+  return c.silo.present ? run_silo(o, c, report, std::move(model))
+                        : run_generic(o, c, report, std::move(model));
 }
 
 }  // namespace silodem::app

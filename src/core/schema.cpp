@@ -37,6 +37,11 @@ Field Field::integer_list(std::string key, std::string doc) {
   f.kind = FieldKind::IntegerList;
   return f;
 }
+Field Field::number_list(std::string key, std::string doc, std::string unit, double to_si) {
+  Field f = number(std::move(key), std::move(doc), std::move(unit), to_si);
+  f.kind = FieldKind::NumberList;
+  return f;
+}
 Field Field::vec3(std::string key, std::string doc, std::string unit, double to_si) {
   Field f = number(std::move(key), std::move(doc), std::move(unit), to_si);
   f.kind = FieldKind::Vec3;

@@ -14,7 +14,7 @@
 
 namespace silodem {
 
-enum class FieldKind { Number, Integer, Bool, String, Vec3, IntegerList };
+enum class FieldKind { Number, Integer, Bool, String, Vec3, IntegerList, NumberList };
 
 struct Field {
   std::string key;
@@ -39,6 +39,8 @@ struct Field {
                     std::string def = {});
   static Field vec3(std::string key, std::string doc, std::string unit = {}, double to_si = 1.0);
   static Field integer_list(std::string key, std::string doc);
+  // Numbers in case-file units, each checked against the range.
+  static Field number_list(std::string key, std::string doc, std::string unit = {}, double to_si = 1.0);
   Field& with_default(double v) {
     default_number = v;
     return *this;

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -24,7 +25,12 @@ CsvWriter::~CsvWriter() {
 
 void CsvWriter::row(const std::vector<double>& values) {
   if (values.size() != ncol_) throw std::logic_error("CSV row has the wrong number of columns");
-  fmt::print(f_, "{}\n", fmt::join(values, ","));
+  std::string line;
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    if (k) line += ',';
+    if (!std::isnan(values[k])) line += fmt::format("{}", values[k]);  // NaN: an empty cell
+  }
+  fmt::print(f_, "{}\n", line);
 }
 
 void CsvWriter::finish() {

@@ -101,12 +101,12 @@ double balanced_cut(const ParticleStore& p, std::uint64_t a0, std::uint64_t a1, 
 double surface_height(const ParticleStore& p, const SiloGeometry& g, double d) {
   const double top = top_of_bed(p, 0.0);
   const int n = std::max(1, int(top / d) + 1);
-  std::vector<double> vol(std::size_t(n), 0.0);
+  std::vector<double> vol(static_cast<std::size_t>(n), 0.0);
   for (std::size_t i = 0; i < p.size(); ++i) {
     const int k = std::clamp(int(p.x[i].z / d), 0, n - 1);
     vol[std::size_t(k)] += kPi / 6.0 * 8.0 * p.radius[i] * p.radius[i] * p.radius[i];
   }
-  std::vector<double> phi(std::size_t(n));
+  std::vector<double> phi(static_cast<std::size_t>(n));
   for (int k = 0; k < n; ++k) phi[std::size_t(k)] = vol[std::size_t(k)] / g.volume(k * d, (k + 1) * d);
   std::vector<double> sorted(phi.begin(), phi.begin() + std::max(1, int(0.8 * n)));
   std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());

@@ -7,6 +7,9 @@
 
 #include "core/constants.hpp"
 #include "engine/neighbor/cell_grid.hpp"
+#include "scenario/layers.hpp"
+#include "scenario/outlet_stats.hpp"
+#include "scenario/size_distribution.hpp"
 
 namespace silodem {
 namespace {
@@ -58,7 +61,8 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
 
   // Masses present: the coals' CG particles and any explicitly sized particle.
   std::vector<double> min_mass(c.coals.size(), 0.0);
-  for (std::size_t a = 0; a < c.coals.size(); ++a) min_mass[a] = r.coals[a].cg_mass;
+  for (std::size_t a = 0; a < c.coals.size(); ++a)
+    min_mass[a] = sphere_mass(SizeSampler(c.coals[a], c.cg).min_diameter(), c.coals[a].true_density);
   for (const auto& p : c.particles)
     if (p.diameter > 0)
       min_mass[p.coal] =
@@ -96,8 +100,58 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
     r.time_step = r.collision_time_min / c.time.steps_per_collision;
   }
 
+  if (c.silo.present) {
+    const SiloGeometry& g = c.silo.geometry;
+    const std::vector<std::string> seg = segments_bottom_up(parse_scenario(c.fill.scenario));
+    const double h = (c.fill.fill_height > 0 ? c.fill.fill_height : g.cone_height) / c.fill.segments;
+    std::vector<double> mass_per_coal(c.coals.size(), 0.0), q;
+    for (const auto& coal : c.coals) q.push_back(coal.heating_value);
+    for (std::size_t s = 0; s < seg.size(); ++s) {
+      SegmentPlan sp;
+      sp.index = int(s) + 1;
+      sp.coal = int(std::find(c.coal_symbols.begin(), c.coal_symbols.end(), seg[s]) - c.coal_symbols.begin());
+      sp.z_low = double(s) * h;
+      sp.z_high = double(s + 1) * h;
+      sp.volume = g.volume(sp.z_low, sp.z_high);
+      sp.mass = c.coals[std::size_t(sp.coal)].bulk_density * sp.volume;
+      mass_per_coal[std::size_t(sp.coal)] += sp.mass;
+      r.fill_plan.push_back(sp);
+      r.segment_coal.push_back(sp.coal);
+    }
+    r.inventory_calorific = mixture_calorific(mass_per_coal, q);
+    for (std::size_t a = 0; a < c.coals.size(); ++a) {
+      const double ratio = g.outlet_diameter / SizeSampler(c.coals[a], c.cg).max_diameter();
+      if (ratio < 6.0)
+        r.warnings.push_back(fmt::format(
+            "outlet / largest CG diameter of {} is {:.2f} < 6: at the edge where even dry spheres "
+            "clog (about 5; PHYSICS.md, coarse-graining caution)",
+            c.coals[a].name, ratio));
+    }
+  }
   if (model_out) *model_out = std::move(model);
   return r;
+}
+
+std::unique_ptr<Simulation> build_silo_simulation(const Case& c, const CaseReport& report,
+                                                  ContactModel model, std::size_t* valve_index,
+                                                  int threads_override) {
+  SimulationSettings s;
+  s.dt = report.time_step;
+  s.gravity = c.time.gravity;
+  double d_min = 1e300;
+  for (const auto& coal : c.coals) d_min = std::min(d_min, SizeSampler(coal, c.cg).min_diameter());
+  s.skin = c.time.skin * d_min;
+  s.threads = threads_override > 0 ? threads_override : c.time.threads;
+  auto sim = std::make_unique<Simulation>(std::move(model), s);
+  SiloWalls walls = make_silo_walls(c.silo.geometry);
+  const std::size_t first = sim->walls().size();
+  for (auto& w : walls.walls) sim->add_wall(std::move(w));
+  for (const auto& w : c.walls) {
+    const WallEntry* e = find_wall_type(w.type);
+    for (auto& surface : e->make(w.values)) sim->add_wall(std::move(surface));
+  }
+  if (valve_index) *valve_index = first + walls.valve_index;
+  return sim;
 }
 
 std::unique_ptr<Simulation> build_simulation(const Case& c, const CaseReport& report,

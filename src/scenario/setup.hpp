@@ -23,16 +23,32 @@ struct CoalReport {
   double wall_damping_normal = 0.0, wall_collision_time = 0.0;
 };
 
+struct SegmentPlan {
+  int index = 0;  // 1 = H1 (bottom)
+  int coal = 0;
+  double z_low = 0.0, z_high = 0.0, volume = 0.0;
+  double mass = 0.0;  // measured bulk density x volume (kg)
+};
+
 struct CaseReport {
   std::vector<CoalReport> coals;
   double k = 1.0;
   double collision_time_min = 0.0;  // smallest t_col over all pair kinds and sizes present
   double time_step = 0.0;
   std::vector<std::string> warnings;
+  // Silo cases: the nominal fill (by measured bulk density) and its calorific value (Eq. 17).
+  std::vector<SegmentPlan> fill_plan;
+  std::vector<int> segment_coal;  // coal of each filled segment, bottom first
+  double inventory_calorific = 0.0;
 };
 
 // Derives every number and checks the time step (refuses dt > t_col / 10).
 CaseReport derive_case(const Case& c, ContactModel* model_out = nullptr);
+
+// Silo case: a simulation holding the silo walls with the valve closed, and no particles yet.
+std::unique_ptr<Simulation> build_silo_simulation(const Case& c, const CaseReport& report,
+                                                  ContactModel model, std::size_t* valve_index,
+                                                  int threads_override = 0);
 
 // Builds the simulation: walls, placed and lattice particles (refusing overlaps).
 std::unique_ptr<Simulation> build_simulation(const Case& c, const CaseReport& report,

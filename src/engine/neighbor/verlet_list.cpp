@@ -100,10 +100,9 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   const double w_skin = skin;
 #pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
-    WallHit hit;
     const double limit = p.radius[i] * (1.0 + 2.0 * reach_over_d) + w_skin;
     int c = 0;
-    for (const auto& w : walls) c += (w->enabled && w->near(p.x[i], limit, hit)) ? 1 : 0;
+    for (const auto& w : walls) c += (w->enabled && w->may_touch(p.x[i], limit)) ? 1 : 0;
     wcount[i + 1] = c;
   }
   wall_offset.assign(n + 1, 0);
@@ -111,11 +110,10 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   wall.assign(wall_offset[n], 0);
 #pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
-    WallHit hit;
     const double limit = p.radius[i] * (1.0 + 2.0 * reach_over_d) + w_skin;
     int e = wall_offset[i];
     for (std::size_t k = 0; k < walls.size(); ++k)
-      if (walls[k]->enabled && walls[k]->near(p.x[i], limit, hit)) wall[e++] = int(k);
+      if (walls[k]->enabled && walls[k]->may_touch(p.x[i], limit)) wall[e++] = int(k);
   }
 
   // Re-attach the history by stable ids.

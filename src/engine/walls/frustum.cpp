@@ -44,6 +44,15 @@ bool FrustumFace::near(const Vec3& c, double limit, WallHit& hit) const {
   return true;
 }
 
+bool FrustumFace::may_touch(const Vec3& c, double limit) const {
+  double r, ex, ey;
+  radial(cx_, cy_, c, r, ex, ey);
+  const double mr = r - a_.r, mz = c.z - a_.z;
+  const double t = mr * ur_ + mz * uz_;
+  const double dist = mr * nr_ + mz * nz_;
+  return t >= -limit && t <= len_ + limit && dist < limit && dist >= -limit;
+}
+
 std::string FrustumFace::describe() const {
   return fmt::format("frustum face from (r {:g}, z {:g}) over {:g} m", a_.r, a_.z, len_);
 }
@@ -62,6 +71,12 @@ bool CircleEdge::near(const Vec3& c, double limit, WallHit& hit) const {
   hit.n = {mr / dist * ex, mr / dist * ey, mz / dist};
   hit.distance = dist;
   return true;
+}
+
+bool CircleEdge::may_touch(const Vec3& c, double limit) const {
+  double r, ex, ey;
+  radial(cx_, cy_, c, r, ex, ey);
+  return std::hypot(r - at_.r, c.z - at_.z) < limit;
 }
 
 std::string CircleEdge::describe() const {

@@ -20,6 +20,7 @@ class FrustumFace final : public Wall {
   // `inner`: particles are on the axis side of the surface (inside a silo).
   FrustumFace(double cx, double cy, Meridian a, Meridian b, bool inner);
   bool near(const Vec3& c, double limit, WallHit& hit) const override;
+  bool may_touch(const Vec3& c, double limit) const override;
   std::string describe() const override;
 
  private:
@@ -36,6 +37,7 @@ class CircleEdge final : public Wall {
   // from the edge along that face, the particle must lie behind the face's end.
   CircleEdge(double cx, double cy, Meridian at, std::vector<Meridian> adjacent_directions);
   bool near(const Vec3& c, double limit, WallHit& hit) const override;
+  bool may_touch(const Vec3& c, double limit) const override;
   std::string describe() const override;
 
  private:

@@ -21,6 +21,13 @@ class Wall {
   virtual ~Wall() = default;
   // True (and `hit` filled) when the centre is closer than `limit` to the surface.
   virtual bool near(const Vec3& centre, double limit, WallHit& hit) const = 0;
+  // Candidate test of the neighbour list: true if the wall may touch a sphere whose centre stays
+  // within `limit` of c. Must not apply region restrictions that a particle can cross between two
+  // list builds (face ends, edge regions); the default is `near`.
+  virtual bool may_touch(const Vec3& c, double limit) const {
+    WallHit hit;
+    return near(c, limit, hit);
+  }
   virtual Vec3 velocity() const { return {}; }
   virtual std::string describe() const = 0;
   bool enabled = true;  // a disabled wall (an opened valve) takes part in no contact

@@ -4,12 +4,14 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "engine/walls/wall.hpp"
 #include "io/config/schema.hpp"
+#include "scenario/layers.hpp"
 #include "model/contact/registry.hpp"
 
 namespace silodem::config {
@@ -20,7 +22,8 @@ struct Reader {
 
   SourcePlace place(const toml::node& n) const {
     const auto& s = n.source();
-    return {file, int(s.begin.line), int(s.begin.column)};
+    // Values from --set overrides carry their own "path" ("--set key=value").
+    return {s.path && !s.path->empty() ? *s.path : file, int(s.begin.line), int(s.begin.column)};
   }
 
   std::string type_name(FieldKind k) const {
@@ -37,6 +40,8 @@ struct Reader {
         return "an array of 3 numbers";
       case FieldKind::IntegerList:
         return "an array of integers";
+      case FieldKind::NumberList:
+        return "an array of numbers";
     }
     return "?";
   }
@@ -85,6 +90,7 @@ struct Reader {
             v.vectors[f.key] = Vec3{};
             break;
           case FieldKind::IntegerList:
+          case FieldKind::NumberList:
             v.lists[f.key] = {};
             break;
           default:
@@ -155,6 +161,22 @@ struct Reader {
           for (const auto& e : *a) {
             if (!e.is_integer() || e.value<std::int64_t>().value() < 0) throw bad_type();
             out.push_back(double(e.value<std::int64_t>().value()));
+          }
+          v.lists[f.key] = std::move(out);
+          break;
+        }
+        case FieldKind::NumberList: {
+          const toml::array* a = node->as_array();
+          if (!a || a->empty()) throw bad_type();
+          std::vector<double> out;
+          for (const auto& e : *a) {
+            if (!e.is_number()) throw bad_type();
+            const double x = e.value<double>().value();
+            if (!f.in_range(x))
+              throw InputError(place(e), full,
+                               fmt::format("contains {} which is out of range; allowed {}{}", x,
+                                           f.range_text(), f.unit.empty() ? "" : " " + f.unit));
+            out.push_back(x * f.to_si);
           }
           v.lists[f.key] = std::move(out);
           break;
@@ -350,6 +372,35 @@ Case build(const toml::table& root, const std::string& file) {
         throw v.error("bulk_density_kg_m3",
                       fmt::format("gives a porosity (Eq. 15) of {:.4g}, outside (0, 1)", eps));
     }
+    // Size distribution: class diameters and mass fractions, or one diameter.
+    const auto& sd = v.lists.at("sieve_diameters_mm");
+    const auto& sf = v.lists.at("sieve_mass_fractions");
+    if (sd.size() != sf.size())
+      throw v.error(sd.empty() ? "sieve_diameters_mm" : "sieve_mass_fractions",
+                    fmt::format("has {} entries but sieve_diameters_mm has {}; give both with one "
+                                "entry per class",
+                                sf.size(), sd.size()));
+    if (!sd.empty()) {
+      double sum = 0.0;
+      for (std::size_t k = 0; k < sd.size(); ++k) {
+        p.size_classes.push_back({sd[k], sf[k]});
+        sum += sf[k];
+      }
+      if (std::fabs(sum - 1.0) > 1e-3)
+        throw v.error("sieve_mass_fractions",
+                      fmt::format("sum to {:.6g}; allowed 1 +- 0.001", sum));
+    }
+    std::string symbol = v.string("symbol");
+    if (symbol == "-") symbol = p.name.substr(0, 1);
+    for (char ch : symbol)
+      if (!std::isalpha(static_cast<unsigned char>(ch)))
+        throw v.error("symbol", "= \"" + symbol + "\" must be letters only");
+    for (std::size_t k = 0; k < c.coal_symbols.size(); ++k)
+      if (c.coal_symbols[k] == symbol)
+        throw v.error("symbol", fmt::format("= \"{}\" is already the symbol of coal \"{}\"; give "
+                                            "each coal its own symbol",
+                                            symbol, c.coals[k].name));
+    c.coal_symbols.push_back(symbol);
     c.coals.push_back(p);
     c.coal_places.push_back(v.place);
   }
@@ -432,6 +483,69 @@ Case build(const toml::table& root, const std::string& file) {
       c.lattices.push_back(l);
     }
   }
+  // [silo], [fill], [discharge]
+  if (root.get("silo")) {
+    c.silo.present = true;
+    const ParamValues v = r.read(single("silo"), section("silo").fields, "silo");
+    auto& g = c.silo.geometry;
+    g.outlet_diameter = v.number("outlet_diameter_mm");
+    g.cone_height = v.number("cone_height_mm");
+    g.cylinder_diameter = v.number("cylinder_diameter_mm");
+    g.cylinder_height = v.number("cylinder_height_mm");
+    g.valve_gap = v.number("valve_gap_mm");
+    if (g.cylinder_diameter <= g.outlet_diameter)
+      throw v.error("cylinder_diameter_mm",
+                    fmt::format("= {:g} must be larger than outlet_diameter_mm = {:g}",
+                                g.cylinder_diameter * 1e3, g.outlet_diameter * 1e3));
+    if (!c.particles.empty() || !c.lattices.empty())
+      throw v.error("", "a silo case fills itself: remove the [[particle]] and [[lattice]] tables");
+    const toml::node* fn = root.get("fill");
+    if (!fn) throw InputError({file, 1, 1}, "fill", "missing: a silo case needs [fill] with a scenario");
+    const ParamValues f = r.read(single("fill"), section("fill").fields, "fill");
+    c.fill.scenario = f.string("scenario");
+    c.fill.scenario_place = f.places.count("scenario") ? f.places.at("scenario") : f.place;
+    c.fill.segments = int(f.number("segments"));
+    c.fill.fill_height = f.number("fill_height_mm");
+    c.fill.mode = f.string("mode") == "volume" ? FillMode::Volume : FillMode::Mass;
+    c.fill.lattice_gap = f.number("lattice_gap");
+    c.fill.settle_ke = f.number("settle_ke_per_particle_j");
+    c.fill.settle_max_time = f.number("settle_max_time");
+    if (c.fill.fill_height > g.total_height())
+      throw f.error("fill_height_mm", fmt::format("= {:g} is above the silo ({:g} mm)",
+                                                  c.fill.fill_height * 1e3, g.total_height() * 1e3));
+    std::vector<Layer> layers;
+    try {
+      layers = parse_scenario(c.fill.scenario);
+    } catch (const std::invalid_argument& e) {
+      throw f.error("scenario", e.what());
+    }
+    int used = 0;
+    for (const auto& l : layers) {
+      used += l.segments;
+      if (std::find(c.coal_symbols.begin(), c.coal_symbols.end(), l.symbol) == c.coal_symbols.end())
+        throw f.error("scenario", fmt::format("= \"{}\": no coal has the symbol \"{}\" (known: {})",
+                                              c.fill.scenario, l.symbol, fmt::join(c.coal_symbols, ", ")));
+    }
+    if (used > c.fill.segments)
+      throw f.error("scenario", fmt::format("= \"{}\" needs {} segments but fill.segments = {}",
+                                            c.fill.scenario, used, c.fill.segments));
+    if (c.fill.mode == FillMode::Mass)
+      for (std::size_t k = 0; k < c.coals.size(); ++k)
+        if (c.coals[k].bulk_density <= 0)
+          throw InputError(c.coal_places[k], fmt::format("coal[{}].bulk_density_kg_m3", k),
+                           "missing: filling by mass needs the measured bulk density");
+    const ParamValues d = r.read(single("discharge"), section("discharge").fields, "discharge");
+    c.discharge.bin = d.number("bin");
+    c.discharge.sink_depth = d.number("sink_depth_mm");
+    c.discharge.stall_time = d.number("stall_time");
+    c.discharge.max_time = d.number("max_time");
+    c.discharge.target_fraction = d.number("target_fraction");
+  } else {
+    for (const char* s : {"fill", "discharge"})
+      if (const toml::node* n = root.get(s))
+        throw InputError(r.place(*n), s, "only a silo case (with [silo]) has this section");
+  }
+
   // [output]
   {
     const ParamValues v = r.read(single("output"), section("output").fields, "output");
@@ -441,9 +555,54 @@ Case build(const toml::table& root, const std::string& file) {
   return c;
 }
 
-Case parse(const std::string& text, const std::string& name) {
+// Applies "a.b.c=value" (value in TOML syntax; a bare word is taken as a string).
+void apply_override(toml::table& root, const std::string& item) {
+  const auto eq = item.find('=');
+  const SourcePlace here{"--set " + item, 0, 0};
+  if (eq == std::string::npos || eq == 0)
+    throw InputError(here, "", "expected key=value, e.g. --set coarse_graining.k=4");
+  const std::string key = item.substr(0, eq), value = item.substr(eq + 1);
+  toml::table snippet;
   try {
-    const toml::table root = toml::parse(text, name);
+    snippet = toml::parse("v = " + value, "--set " + item);
+  } catch (const toml::parse_error&) {
+    snippet = toml::parse("v = \"" + value + "\"", "--set " + item);
+  }
+  toml::table* t = &root;
+  std::size_t start = 0;
+  for (;;) {
+    const auto dot = key.find('.', start);
+    std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    long index = -1;  // coal[1]
+    if (const auto br = part.find('['); br != std::string::npos && part.back() == ']') {
+      index = std::stol(part.substr(br + 1, part.size() - br - 2));
+      part = part.substr(0, br);
+    }
+    if (part.empty()) throw InputError(here, key, "empty key component");
+    if (dot == std::string::npos) {
+      t->insert_or_assign(part, std::move(*snippet.get("v")));
+      return;
+    }
+    toml::node* next = t->get(part);
+    if (index >= 0) {
+      toml::array* a = next ? next->as_array() : nullptr;
+      if (!a || index >= long(a->size()) || !(*a)[std::size_t(index)].is_table())
+        throw InputError(here, key, "no table " + part + "[" + std::to_string(index) + "] in the case");
+      t = (*a)[std::size_t(index)].as_table();
+    } else {
+      if (!next) next = &t->insert_or_assign(part, toml::table{}).first->second;
+      if (!next->is_table()) throw InputError(here, key, "'" + part + "' is not a table");
+      t = next->as_table();
+    }
+    start = dot + 1;
+  }
+}
+
+Case parse(const std::string& text, const std::string& name,
+           const std::vector<std::string>& overrides = {}) {
+  try {
+    toml::table root = toml::parse(text, name);
+    for (const auto& o : overrides) apply_override(root, o);
     return build(root, name);
   } catch (const toml::parse_error& e) {
     const auto& s = e.source();
@@ -456,12 +615,12 @@ Case parse(const std::string& text, const std::string& name) {
 
 }  // namespace
 
-Case load_case_file(const std::string& path) {
+Case load_case_file(const std::string& path, const std::vector<std::string>& overrides) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, 0}, "", "cannot open the case file");
   std::ostringstream ss;
   ss << in.rdbuf();
-  return parse(ss.str(), path);
+  return parse(ss.str(), path, overrides);
 }
 
 Case load_case_text(const std::string& text, const std::string& name) {

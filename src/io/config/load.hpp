@@ -9,7 +9,8 @@
 
 namespace silodem::config {
 
-Case load_case_file(const std::string& path);
+// `overrides`: "key=value" items (--set), applied before validation.
+Case load_case_file(const std::string& path, const std::vector<std::string>& overrides = {});
 // `name` is used in error messages in place of a path.
 Case load_case_text(const std::string& text, const std::string& name);
 

@@ -54,8 +54,8 @@ std::vector<Field> fields(bool) {
           .at_least(0)
           .at_most(2),
       Field::flag("limit_sees_cohesion",
-                  "limit torque on the net normal force (with the cohesive pull) instead of the "
-                  "contact force",
+                  "limit torque on the net compressive force max(0, F_n - F_coh) instead of "
+                  "|F_n|",
                   false),
   };
 }

@@ -46,8 +46,8 @@ std::vector<Field> fields(bool) {
           .at_least(0)
           .at_most(10),
       Field::flag("cap_sees_cohesion",
-                  "Coulomb cap on the net normal force (elastic + damping - cohesive) instead of "
-                  "elastic + damping (MFIX: false)",
+                  "Coulomb cap on the net compressive force max(0, elastic + damping - cohesive) "
+                  "instead of |elastic + damping| (MFIX: false)",
                   false),
   };
 }

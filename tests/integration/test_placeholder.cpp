@@ -1,0 +1,3 @@
+// SPDX-License-Identifier: MIT
+// (replaced by the assembly tests)
+#include <gtest/gtest.h>
