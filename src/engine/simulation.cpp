@@ -104,11 +104,12 @@ void Simulation::run_until(double t_end) {
 
 void Simulation::compute_forces() {
   const std::size_t n = p_.size();
-  const int nt = s_.threads;
+  // Small systems run on one thread: a parallel region costs more than it saves there.
+  const int nt = n < 512 ? 1 : s_.threads;
   const double dt = s_.dt;
-  if (int(f_buf_.size()) != nt) {
-    f_buf_.assign(nt, {});
-    t_buf_.assign(nt, {});
+  if (int(f_buf_.size()) < nt) {
+    f_buf_.resize(std::size_t(nt));
+    t_buf_.resize(std::size_t(nt));
   }
   int team = 1;
 #pragma omp parallel num_threads(nt)

@@ -61,6 +61,8 @@ DischargeResult discharge(Simulation& sim, const SiloGeometry& g, std::size_t va
       st.recent_rate = bin_mass / (t - bin_start);
       bin_mass = 0.0;
       bin_start = t;
+    } else if (t < spec.bin) {
+      st.recent_rate = r.discharged_mass / t;  // first bin: the running mean
     }
     st.t = t;
     st.particles_left = p.size();
