@@ -137,6 +137,32 @@ TEST(Rolling, TP7_StoppingDistanceMfixDiameterConvention) {
   }
 }
 
+// A sphere resting on a plane with a small initial spin, MFIX rolling law: returns the largest
+// |omega| over the last 0.1 s of 0.5 s.
+double mfix_rest_spin(bool regularize) {
+  test::Laws l = frictional(0.5);
+  l.rolling = "mfix";
+  l.rolling_p = {{"friction", 0.6}, {"regularize", regularize ? 1.0 : 0.0}};
+  Ball b = ball_on_plane(l, {}, {0, 1.0, 0});
+  b.sim->run_until(0.4);
+  double w = 0.0;
+  while (b.sim->time() < 0.5) {
+    b.sim->step();
+    w = std::max(w, norm(b.p().omega[0]));
+  }
+  return w;
+}
+
+TEST(Rolling, MfixChattersAtRestUnlessRegularized) {
+  // Pure MFIX: the torque mu_r d m g flips every step, |omega| ~ T dt / I never decays.
+  const double m = test::sphere_mass_of(1e-2, 2500), r = 5e-3;
+  const double torque = 0.6 * 2 * r * m * kG, inertia = 0.4 * m * r * r;
+  ContactModel model = test::model_of(frictional(0.5));
+  const double dt = model.wall_collision_time(0, m) / 50;
+  EXPECT_GT(mfix_rest_spin(false), 0.1 * torque * dt / inertia);
+  EXPECT_LT(mfix_rest_spin(true), 1e-6);
+}
+
 // Sphere released at rest on a plane tilted by alpha (gravity tilted instead of the plane).
 double incline_travel(double alpha_deg, double mu_s, double mu_r) {
   test::Laws l = frictional(mu_s);

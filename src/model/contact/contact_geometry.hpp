@@ -17,6 +17,7 @@ struct ContactGeometry {
   double d_i = 0.0, d_j = 0.0;   // diameters (d_j = 0 for a wall)
   double d_ref = 0.0;            // length that scales cohesion ranges: mean diameter; d_i at a wall
   double rolling_inertia = 0.0;  // I_r of the EPSD law (Ai et al. 2011, Eq. 16)
+  double inertia_i = 0.0, inertia_j = 0.0;  // moments of inertia (0 for a wall)
   Vec3 v_rel;                    // velocity of i's contact point relative to j's
   double overlap_rate = 0.0;     // d(delta_n)/dt = -v_rel . n
   Vec3 v_t;                      // tangential part of v_rel

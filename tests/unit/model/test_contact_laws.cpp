@@ -222,7 +222,7 @@ TEST(RollingMfix, TorqueOpposesOwnSpinWithDiameter) {
   Laws l;
   l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
   l.rolling = "mfix";
-  l.rolling_p = {{"friction", 0.6}};
+  l.rolling_p = {{"friction", 0.6}, {"regularize", 0.0}};
   const ContactLaw law = test::law_of(l, false);
   ContactGeometry g = geometry(1e-4);
   g.omega_i = {0, 0, 3.0};
@@ -232,6 +232,22 @@ TEST(RollingMfix, TorqueOpposesOwnSpinWithDiameter) {
   const double mag = 0.6 * 1e-2 * 1e4 * 1e-4;  // mu_r d k_n delta_n
   EXPECT_NEAR(t.on_i.z, -mag, 1e-15);
   EXPECT_NEAR(t.on_j.x, -mag, 1e-15);
+}
+
+TEST(RollingMfix, RegularizedOnlyBelowTenStepsOfSpin) {
+  Laws l;
+  l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
+  l.rolling = "mfix";
+  l.rolling_p = {{"friction", 0.6}};
+  const ContactLaw law = test::law_of(l, false);
+  ContactGeometry g = geometry(1e-4);
+  const double mag = 0.6 * 1e-2 * 1e4 * 1e-4, dt = 1e-5;
+  const double w_eps = 10 * mag * dt / g.inertia_i;  // 6 rad/s here
+  Vec3 spring{};
+  g.omega_i = {0, 0, 2 * w_eps};  // rolling: exactly MFIX
+  EXPECT_NEAR(law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z, -mag, 1e-15);
+  g.omega_i = {0, 0, 0.25 * w_eps};  // nearly at rest: a viscous stop
+  EXPECT_NEAR(law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z, -0.25 * mag, 1e-15);
 }
 
 TEST(ContactModel, NoTouchClearsHistoryAndRangedCohesionStillPulls) {
