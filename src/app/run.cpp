@@ -129,12 +129,13 @@ void write_fill_csv(const fs::path& path, const Case& c, const FillReport& f) {
                               "z_high_settled_m", "particles", "mass_kg", "target_mass_kg",
                               "bulk_density_kg_m3", "measured_bulk_density_kg_m3",
                               "solid_fraction", "settle_time_s", "settled"});
-  for (const auto& s : f.segments) {
-    (void)c;
-    w.row({double(s.index), double(s.coal), s.z_low, s.z_high, s.z_low_settled, s.z_high_settled,
-           double(s.particles), s.mass, s.target_mass, s.bulk_density, s.bulk_density_measured,
-           s.solid_fraction, s.settle_time, s.settled ? 1.0 : 0.0});
-  }
+  auto num = [](double x) { return fmt::format("{}", x); };
+  for (const auto& s : f.segments)
+    w.row(std::vector<std::string>{
+        fmt::format("H{}", s.index), c.coals[std::size_t(s.coal)].name, num(s.z_low), num(s.z_high),
+        num(s.z_low_settled), num(s.z_high_settled), fmt::format("{}", s.particles), num(s.mass),
+        num(s.target_mass), num(s.bulk_density), num(s.bulk_density_measured),
+        num(s.solid_fraction), num(s.settle_time), s.settled ? "true" : "false"});
   w.finish();
 }
 

@@ -33,6 +33,11 @@ void CsvWriter::row(const std::vector<double>& values) {
   fmt::print(f_, "{}\n", line);
 }
 
+void CsvWriter::row(const std::vector<std::string>& cells) {
+  if (cells.size() != ncol_) throw std::logic_error("CSV row has the wrong number of columns");
+  fmt::print(f_, "{}\n", fmt::join(cells, ","));
+}
+
 void CsvWriter::finish() {
   if (!f_) return;
   if (std::fflush(f_) != 0 || std::fclose(f_) != 0)

@@ -16,6 +16,8 @@ class CsvWriter {
   CsvWriter& operator=(const CsvWriter&) = delete;
   // Appends one row; numbers with 17 significant digits (round-trip exact).
   void row(const std::vector<double>& values);
+  // Appends one row of already formatted cells (no quoting: cells must not contain commas).
+  void row(const std::vector<std::string>& cells);
   // Flushes, closes and renames to the final name.
   void finish();
   const std::string& path() const { return path_; }

@@ -116,6 +116,30 @@ inline int add_random(Simulation& sim, const Grain& g, const Vec3& lo, const Vec
   return added;
 }
 
+// Jittered simple-cubic lattice of spacing `a` (a - 2 jitter >= d: no overlaps among the new
+// particles), filled layer by layer upwards from `lo` while inside(x) holds and until n particles
+// are placed; the lattice is shifted at random in x and y. Returns the height of the top layer.
+inline double add_lattice(Simulation& sim, const Grain& g, const Vec3& lo, const Vec3& hi, double a,
+                          double jitter, int n, Random& rng,
+                          const std::function<bool(const Vec3&)>& inside = {}) {
+  ParticleStore& p = sim.particles();
+  const double sx = rng.uniform(0.0, a), sy = rng.uniform(0.0, a);
+  int added = 0;
+  double z = lo.z;
+  for (; added < n; z += a) {
+    for (double y = lo.y + sy; y <= hi.y && added < n; y += a)
+      for (double x = lo.x + sx; x <= hi.x && added < n; x += a) {
+        const Vec3 c{x + rng.uniform(-jitter, jitter), y + rng.uniform(-jitter, jitter),
+                     z + rng.uniform(-jitter, jitter)};
+        if (inside && !inside(c)) continue;
+        p.add(c, {}, {}, g.radius(), g.mass(), 0);
+        ++added;
+      }
+  }
+  sim.request_rebuild();
+  return z - a;
+}
+
 inline double kinetic_energy(const ParticleStore& p) {
   double e = 0.0;
   for (std::size_t i = 0; i < p.size(); ++i)
