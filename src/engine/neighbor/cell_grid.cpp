@@ -13,9 +13,31 @@ void CellGrid::build(const std::vector<Vec3>& x, double min_cell, std::size_t ma
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
   if (x.empty()) lo = hi = Vec3{};
+  cell_ = min_cell;
+  auto cells_for = [&](const Vec3& a, const Vec3& b) {
+    const Vec3 e = b - a;
+    return (e.x / cell_ + 1) * (e.y / cell_ + 1) * (e.z / cell_ + 1);
+  };
+  if (cells_for(lo, hi) > double(max_cells) && x.size() > 16) {
+    // A few stray particles far away (flying off, escaping) must neither exhaust memory nor
+    // turn the search quadratic: the grid covers the bulk (0.1% to 99.9% per axis) and the
+    // rest is clamped into its border cells, which keeps neighbouring points in neighbouring
+    // cells.
+    std::vector<double> c(x.size());
+    auto quantile_box = [&](double Vec3::*axis, double& a, double& b) {
+      for (std::size_t i = 0; i < x.size(); ++i) c[i] = x[i].*axis;
+      const std::size_t k = x.size() / 1000;
+      std::nth_element(c.begin(), c.begin() + long(k), c.end());
+      a = c[k] - cell_;
+      std::nth_element(c.begin(), c.begin() + long(x.size() - 1 - k), c.end());
+      b = c[x.size() - 1 - k] + cell_;
+    };
+    quantile_box(&Vec3::x, lo.x, hi.x);
+    quantile_box(&Vec3::y, lo.y, hi.y);
+    quantile_box(&Vec3::z, lo.z, hi.z);
+  }
   lo_ = lo;
   const Vec3 ext = hi - lo;
-  cell_ = min_cell;
   for (;;) {
     dims_ = {std::max(1, static_cast<int>(ext.x / cell_) + 1),
              std::max(1, static_cast<int>(ext.y / cell_) + 1),

@@ -114,3 +114,32 @@ TEST(ContactHistory, SurvivesRemovalThatReordersParticles) {
 
 }  // namespace
 }  // namespace silodem
+
+namespace silodem {
+namespace {
+
+TEST(VerletList, StrayParticlesAreFoundAndDoNotBreakTheGrid) {
+  // 3000 packed spheres plus two strays far away, close to each other: the strays must not blow
+  // up the grid (cells stay one cutoff wide) and their pair must still be found.
+  ParticleStore p;
+  Random rng(5);
+  for (int i = 0; i < 3000; ++i)
+    p.add({rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.05)}, {}, {}, 1e-3, 1e-5, 0);
+  p.add({40.0, -30.0, 100.0}, {}, {}, 1e-3, 1e-5, 0);
+  p.add({40.0015, -30.0, 100.0}, {}, {}, 1e-3, 1e-5, 0);
+  VerletList list;
+  WallList none;
+  list.build(p, none, 2e-4, 0.0);
+  std::size_t pairs = 0, brute = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) pairs += std::size_t(list.offset[i + 1] - list.offset[i]);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      brute += norm2(p.x[i] - p.x[j]) < 2.2e-3 * 2.2e-3 ? 1 : 0;
+  EXPECT_EQ(pairs, brute);
+  const std::size_t a = p.size() - 2;
+  ASSERT_EQ(list.offset[a + 1] - list.offset[a], 1);
+  EXPECT_EQ(list.partner[std::size_t(list.offset[a])], int(a + 1));
+}
+
+}  // namespace
+}  // namespace silodem
