@@ -6,14 +6,22 @@
 namespace silodem {
 
 std::vector<Field> cohesion_common_fields(bool wall) {
+  Field factor = Field::number("factor",
+                               "multiplies F_L,cg (Eq. 13-14): a calibration of the moisture force; "
+                               "1 = the paper's")
+                     .with_default(1.0)
+                     .at_least(0)
+                     .at_most(100);
   if (wall)
     return {Field::number("wall_factor",
                           "wall cohesive force as a multiple of the particle's own F_L,cg")
                 .with_default(1.0)
                 .at_least(0)
-                .at_most(100)};
+                .at_most(100),
+            factor};
   return {Field::text("pair_rule", "F_L,cg between two different coals",
-                      {"mean", "min", "harmonic"}, "mean")};
+                      {"mean", "min", "harmonic"}, "mean"),
+          factor};
 }
 
 double cohesion_pair_rule(const std::string& rule, double f_a, double f_b) {
@@ -23,8 +31,9 @@ double cohesion_pair_rule(const std::string& rule, double f_a, double f_b) {
 }
 
 double cohesion_pair_force(const ParamValues& v, const LawContext& ctx) {
-  if (ctx.wall) return v.number("wall_factor") * ctx.cohesion_i;
-  return cohesion_pair_rule(v.string("pair_rule"), ctx.cohesion_i, ctx.cohesion_j);
+  const double f = v.number("factor");
+  if (ctx.wall) return f * v.number("wall_factor") * ctx.cohesion_i;
+  return f * cohesion_pair_rule(v.string("pair_rule"), ctx.cohesion_i, ctx.cohesion_j);
 }
 
 }  // namespace silodem

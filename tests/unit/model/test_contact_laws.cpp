@@ -143,6 +143,10 @@ TEST(CohesionLaws, PairRulesAndWallFactor) {
   l.cohesion_s.clear();
   l.cohesion_p = {{"wall_factor", 0.5}};
   EXPECT_DOUBLE_EQ(test::law_of(l, true, 0.26).cp.force, 0.13);
+  l.cohesion_p = {{"wall_factor", 0.5}, {"factor", 0.1}};
+  EXPECT_DOUBLE_EQ(test::law_of(l, true, 0.26).cp.force, 0.013);
+  l.cohesion_p = {{"factor", 0.1}};
+  EXPECT_DOUBLE_EQ(test::law_of(l, false, 0.2, 0.4).cp.force, 0.1 * 0.3);
 }
 
 // Quasi-static pull-off work W = integral of the net attractive force from the bonded
