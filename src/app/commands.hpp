@@ -20,5 +20,6 @@ int check_command(const std::string& case_path, bool json,
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitInput = 2;       // bad case file or command line
 inline constexpr int kExitSimulation = 3;  // the simulation went wrong
+inline constexpr int kExitNotEmptied = 4;  // silo: the flow stopped (arching) or hit max_time
 
 }  // namespace silodem::app

@@ -239,7 +239,8 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
              end, dis.discharged_mass, dis.filled_mass, dis.discharge_time,
              dis.discharge_time > 0 ? dis.discharged_mass / dis.discharge_time : 0.0,
              dis.remaining_mass, dis.lost_mass, out.string());
-  return kExitOk;
+  // A stopped flow is a result, not a success: the silo did not empty.
+  return dis.end == DischargeEnd::Emptied ? kExitOk : kExitNotEmptied;
 }
 
 }  // namespace
