@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // No cohesion (dry material).
-#include "model/contact/registry.hpp"
+#include "model/contact/cohesion_common.hpp"
 
 namespace silodem {
 namespace {
