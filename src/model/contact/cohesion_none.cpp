@@ -8,8 +8,10 @@ namespace {
 double kernel(const CohesionParams&, const ContactGeometry&) {
   return 0.0;
 }
-std::vector<Field> fields(bool) {
-  return {};
+// The common keys (pair_rule, wall_factor, factor) are accepted and have no effect, so that a
+// cohesive case can be switched dry with one `--set ...cohesion.law=none`.
+std::vector<Field> fields(bool wall) {
+  return cohesion_common_fields(wall);
 }
 void configure(const ParamValues&, const LawContext&, ContactLaw& law) {
   law.cp = CohesionParams{};
