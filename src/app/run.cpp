@@ -185,6 +185,7 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
                                 frac > 0.01 ? fmt::format("{:.0f} s", wall * (1 / frac - 1)) : "?"));
     });
     progress.finish();
+    if (dis.end == DischargeEnd::Error) error = dis.error;
   } catch (const SimulationError& e) {
     progress.finish();
     error = e.what();
@@ -192,7 +193,7 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
   std::vector<double> q;
   for (const auto& coal : c.coals) q.push_back(coal.heating_value);
   std::vector<OutletBin> bins;
-  if (filled && error.empty()) {
+  if (filled) {  // also after an error: what left until then is kept
     bins = outlet_bins(dis.outflow, c.discharge.bin, dis.end_time, q);
     write_outlet_csv(out / "outlet.csv", c, bins);
   }
@@ -201,9 +202,13 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
       std::fabs(dis.filled_mass - (dis.remaining_mass + dis.discharged_mass + dis.lost_mass));
   std::vector<double> out_per_coal(c.coals.size(), 0.0);
   for (const auto& r : dis.outflow) out_per_coal[std::size_t(r.coal)] += r.mass;
-  const char* end = dis.end == DischargeEnd::Emptied       ? "emptied"
+  const char* end = !filled                                ? "error during the fill"
+                    : dis.end == DischargeEnd::Emptied     ? "emptied"
                     : dis.end == DischargeEnd::FlowStopped ? "flow stopped (no outflow for stall_time)"
+                    : dis.end == DischargeEnd::Error       ? "error during the discharge"
                                                            : "time limit";
+  toml::array fill_warnings;
+  for (const auto& w : fill.warnings) fill_warnings.push_back(w);
   toml::table summary{
       {"complete", error.empty()},
       {"error", error},
@@ -216,6 +221,7 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
       {"particles_lost", dis.particles_lost},
       {"mass_ledger_error_kg", ledger_error},
       {"discharge_time_s", dis.discharge_time},
+      // Mean rate up to the last particle out (a stall after it does not count).
       {"mean_rate_kg_s", dis.discharge_time > 0 ? dis.discharged_mass / dis.discharge_time : 0.0},
       {"flow_stopped", dis.end == DischargeEnd::FlowStopped},
       {"end", end},
@@ -227,6 +233,9 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
       {"k", report.k},
       {"time_step_s", sim->dt()},
       {"discharge_steps", dis.steps},
+      {"discharge_end_time_s", dis.end_time},
+      {"threads", sim->settings().threads},
+      {"fill_warnings", std::move(fill_warnings)},
       {"wall_time_s", progress.elapsed()},
   };
   write_text(out / "summary.json", to_json(summary));

@@ -30,6 +30,9 @@ BodyState body(const ParticleStore& p, std::size_t i) {
 Simulation::Simulation(ContactModel model, SimulationSettings settings)
     : model_(std::move(model)), s_(settings) {
   s_.threads = thread_count(s_.threads);
+#ifdef _OPENMP
+  omp_set_dynamic(0);  // exactly s_.threads threads: the force summation order depends on it
+#endif
   list_.threads = s_.threads;
 }
 
@@ -190,7 +193,10 @@ void Simulation::remove_particles(std::vector<std::size_t> idx) {
   idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
   // Remove from the highest index down so that swapped-in particles are never ones to remove.
   for (auto it = idx.rbegin(); it != idx.rend(); ++it) p_.remove(*it);
-  rebuild_pending_ = true;
+  // Rebuild now: until then the list's indices would point at the wrong (or no) particles for
+  // anyone who reads it (energy(), contact_state(), hooks).
+  list_.build(p_, walls_, s_.skin, model_.max_reach_over_d());
+  rebuild_pending_ = false;
   // Forces of the remaining particles still include the removed ones until the next step's
   // force pass; that is the usual sink convention.
 }

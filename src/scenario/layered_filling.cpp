@@ -28,49 +28,68 @@ long insert_lattice(Simulation& sim, const SiloGeometry& g, const CoalProperties
   auto& p = sim.particles();
   double placed = 0.0;
   long n = 0;
+  std::vector<Vec3> sites;
   for (int layer = 0; placed < mass; ++layer) {
-    const double z = z_start + 0.5 * d + layer * s;
-    if (z + 0.5 * d > g.total_height())
+    // The first layer sits a jitter above the bed (or the valve plate), so that no jittered
+    // sphere starts inside either.
+    const double z = z_start + 0.5 * d + jitter + layer * s;
+    if (z + 0.5 * d + jitter > g.total_height())
       throw SimulationError(fmt::format(
           "the silo is too small for the fill: {:.3g} kg of {} still to place above the top",
           mass - placed, coal.name));
     // Lowest point of the sphere sets the allowed radius (the cone widens upwards).
-    const double r_allowed = g.radius_at(z - 0.5 * d) - 0.5 * d - 0.02 * d;
+    const double r_allowed = g.radius_at(z - 0.5 * d - jitter) - 0.5 * d - jitter - 0.02 * d;
     const int m = int(std::floor(r_allowed / s));
-    for (int iy = -m; iy <= m && placed < mass; ++iy)
-      for (int ix = -m; ix <= m && placed < mass; ++ix) {
-        Vec3 x{ix * s + rng.uniform(-jitter, jitter), iy * s + rng.uniform(-jitter, jitter),
-               z + rng.uniform(-jitter, jitter)};
-        if (std::hypot(x.x, x.y) > r_allowed) continue;
-        const double di = sizes.sample(rng);
-        const double mi = sphere_mass(di, coal.true_density);
-        p.add(x, {}, {}, 0.5 * di, mi, coal_index);
-        placed += mi;
-        ++n;
-      }
+    sites.clear();
+    for (int iy = -m; iy <= m; ++iy)
+      for (int ix = -m; ix <= m; ++ix)
+        if (std::hypot(ix * s, iy * s) <= r_allowed) sites.push_back({ix * s, iy * s, z});
+    // Random order (Fisher-Yates, seeded), so that a partly filled last layer is not lopsided.
+    for (std::size_t k = sites.size(); k > 1; --k)
+      std::swap(sites[k - 1], sites[std::size_t(rng.next_u64() % k)]);
+    for (const Vec3& site : sites) {
+      if (placed >= mass) break;
+      const Vec3 x = site + Vec3{rng.uniform(-jitter, jitter), rng.uniform(-jitter, jitter),
+                                 rng.uniform(-jitter, jitter)};
+      const double di = sizes.sample(rng);
+      const double mi = sphere_mass(di, coal.true_density);
+      p.add(x, {}, {}, 0.5 * di, mi, coal_index);
+      placed += mi;
+      ++n;
+    }
   }
   sim.request_rebuild();
   return n;
 }
 
-// Runs until the kinetic energy per particle is below the threshold; returns the simulated time.
-double settle(Simulation& sim, double ke_threshold, double max_time, bool& settled,
-              const Progress& progress, const std::string& what) {
+// Runs until the kinetic energy per particle is below the threshold at three checks in a row, and
+// at least for `min_time` (inserted particles start at rest: the energy is low before they fall);
+// returns the simulated time.
+double settle(Simulation& sim, double ke_threshold, double min_time, double max_time,
+              bool& settled, const Progress& progress, const std::string& what) {
   const double t0 = sim.time();
   const long check = std::max(1L, long(2e-3 / sim.dt()));  // every 2 ms of simulated time
   settled = false;
+  int below = 0;
   while (sim.time() - t0 < max_time) {
     sim.run_steps(check);
     const double ke = kinetic_energy_per_particle(sim);
     if (progress)
       progress(fmt::format("{}: settling t = {:.3f} s, KE/particle {:.2e} J (target {:.0e})", what,
                            sim.time() - t0, ke, ke_threshold));
-    if (ke < ke_threshold) {
+    below = ke < ke_threshold ? below + 1 : 0;
+    if (below >= 3 && sim.time() - t0 >= min_time) {
       settled = true;
       break;
     }
   }
   return sim.time() - t0;
+}
+
+// Free-fall time from the top of the bed to its base, plus 50 ms: no segment counts as settled
+// before its highest particles could have landed.
+double fall_time(const ParticleStore& p, double floor) {
+  return std::sqrt(2.0 * std::max(0.0, top_of_bed(p, floor) - floor) / 9.81) + 0.05;
 }
 
 // Height that best separates particles with ids in [a0, a1) (below) from [b0, b1) (above): the cut
@@ -158,13 +177,15 @@ FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& seg
       seg.target_mass = coal.bulk_density * volume;
       insert_lattice(sim, g, coal, samplers[std::size_t(ci)], ci, start, seg.target_mass,
                      c.fill.lattice_gap, rng);
-      seg.settle_time = settle(sim, c.fill.settle_ke, c.fill.settle_max_time, seg.settled, progress, what);
+      seg.settle_time = settle(sim, c.fill.settle_ke, fall_time(sim.particles(), start),
+                             c.fill.settle_max_time, seg.settled, progress, what);
     } else {
       // By volume: over-fill (at most random close packing), settle, cut at the segment top,
       // settle again.
       const double mass = 0.64 * coal.true_density * g.volume(std::max(start, 0.0), seg.z_high);
       insert_lattice(sim, g, coal, samplers[std::size_t(ci)], ci, start, mass, c.fill.lattice_gap, rng);
-      seg.settle_time = settle(sim, c.fill.settle_ke, c.fill.settle_max_time, seg.settled, progress, what);
+      seg.settle_time = settle(sim, c.fill.settle_ke, fall_time(sim.particles(), start),
+                             c.fill.settle_max_time, seg.settled, progress, what);
       std::vector<std::size_t> above;
       const auto& p = sim.particles();
       for (std::size_t i = 0; i < p.size(); ++i)
@@ -173,7 +194,7 @@ FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& seg
         r.warnings.push_back(fmt::format("{}: the settled bed did not reach the segment top", what));
       sim.remove_particles(above);
       bool again = false;
-      seg.settle_time += settle(sim, c.fill.settle_ke, c.fill.settle_max_time, again, progress, what);
+      seg.settle_time += settle(sim, c.fill.settle_ke, 0.05, c.fill.settle_max_time, again, progress, what);
       seg.settled = seg.settled && again;
       seg.target_mass = 0.0;
     }
@@ -206,6 +227,12 @@ FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& seg
     r.particles += seg.particles;
     r.mass += seg.mass;
   }
+  if (r.max_boundary_offset > d_max)
+    r.warnings.push_back(fmt::format(
+        "a settled coal boundary lies {:.1f} mm from its segment boundary, more than one CG "
+        "diameter ({:.1f} mm): the fill by mass packs at a bulk density other than the measured "
+        "one (see fill.csv; mode = \"volume\" fills each segment to its top)",
+        r.max_boundary_offset * 1e3, d_max * 1e3));
   return r;
 }
 

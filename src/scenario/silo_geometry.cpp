@@ -36,7 +36,8 @@ SiloWalls make_silo_walls(const SiloGeometry& g) {
   const Meridian rim{g.outlet_radius(), 0.0}, joint{g.top_radius(), g.cone_height},
       top{g.top_radius(), g.total_height()};
   s.walls.push_back(std::make_unique<FrustumFace>(0.0, 0.0, rim, joint, true));
-  s.walls.push_back(std::make_unique<FrustumFace>(0.0, 0.0, joint, top, true));
+  if (g.cylinder_height > 0.0)  // no cylinder: no zero-length face
+    s.walls.push_back(std::make_unique<FrustumFace>(0.0, 0.0, joint, top, true));
   // The rim is a convex edge seen from the outlet: it acts where the cone face does not, i.e.
   // behind the face's lower end. The cone/cylinder joint is concave from the inside: the two faces
   // cover it, with no edge of its own.

@@ -61,7 +61,8 @@ every = 10
 EOF2
 "$bin" run "$work/drop.toml" --out "$work/drop" > /dev/null 2>&1 || bad "run exited $?"
 [ -f "$work/drop/trajectory.csv" ] || bad "no trajectory.csv"
-[ -f "$work/drop/summary.json" ] && grep -q '"complete": true' "$work/drop/summary.json" || bad "summary not complete"
+python3 -c 'import json,sys; sys.exit(0 if json.load(open(sys.argv[1]))["complete"] is True else 1)' \
+  "$work/drop/summary.json" || bad "summary not complete"
 # free fall: z(t) = 1 - g t^2 / 2 in the last row
 python3 - "$work/drop/trajectory.csv" <<'PY' || fail=1
 import csv, sys

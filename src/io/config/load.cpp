@@ -377,9 +377,9 @@ Case build(const toml::table& root, const std::string& file) {
     const auto& sf = v.lists.at("sieve_mass_fractions");
     if (sd.size() != sf.size())
       throw v.error(sd.empty() ? "sieve_diameters_mm" : "sieve_mass_fractions",
-                    fmt::format("has {} entries but sieve_diameters_mm has {}; give both with one "
-                                "entry per class",
-                                sf.size(), sd.size()));
+                    fmt::format("sieve_diameters_mm has {} entries and sieve_mass_fractions {}; "
+                                "give both, one entry per class",
+                                sd.size(), sf.size()));
     if (!sd.empty()) {
       double sum = 0.0;
       for (std::size_t k = 0; k < sd.size(); ++k) {
@@ -493,6 +493,17 @@ Case build(const toml::table& root, const std::string& file) {
     g.cylinder_diameter = v.number("cylinder_diameter_mm");
     g.cylinder_height = v.number("cylinder_height_mm");
     g.valve_gap = v.number("valve_gap_mm");
+    double d_min = 1e300;
+    for (const auto& coal : c.coals) {
+      d_min = std::min(d_min, coal.diameter);
+      for (const auto& sc : coal.size_classes) d_min = std::min(d_min, sc.diameter);
+    }
+    d_min *= c.cg.k;
+    if (g.valve_gap >= 0.5 * d_min)
+      throw v.error("valve_gap_mm",
+                    fmt::format("= {:g} must be below half the smallest CG diameter ({:g} mm): "
+                                "a wider gap between plate and rim is open at the sides",
+                                g.valve_gap * 1e3, 0.5 * d_min * 1e3));
     if (g.cylinder_diameter <= g.outlet_diameter)
       throw v.error("cylinder_diameter_mm",
                     fmt::format("= {:g} must be larger than outlet_diameter_mm = {:g}",
@@ -540,6 +551,9 @@ Case build(const toml::table& root, const std::string& file) {
     c.discharge.stall_time = d.number("stall_time");
     c.discharge.max_time = d.number("max_time");
     c.discharge.target_fraction = d.number("target_fraction");
+    if (c.discharge.max_time / c.discharge.bin > 1e7)
+      throw d.error("bin", fmt::format("= {:g} s gives more than 1e7 bins over max_time = {:g} s",
+                                       c.discharge.bin, c.discharge.max_time));
   } else {
     for (const char* s : {"fill", "discharge"})
       if (const toml::node* n = root.get(s))
@@ -575,7 +589,11 @@ void apply_override(toml::table& root, const std::string& item) {
     std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
     long index = -1;  // coal[1]
     if (const auto br = part.find('['); br != std::string::npos && part.back() == ']') {
-      index = std::stol(part.substr(br + 1, part.size() - br - 2));
+      const std::string digits = part.substr(br + 1, part.size() - br - 2);
+      if (digits.empty() || digits.size() > 6 ||
+          digits.find_first_not_of("0123456789") != std::string::npos)
+        throw InputError(here, key, "'" + part + "': the index must be a number, e.g. coal[1]");
+      index = std::stol(digits);
       part = part.substr(0, br);
     }
     if (part.empty()) throw InputError(here, key, "empty key component");

@@ -134,7 +134,7 @@ const std::vector<Section>& sections() {
        "the discharge after the valve opens",
        false,
        {
-           F::number("bin", "outlet statistics bin (the paper: 1 s)", "s").with_default(1).above(0).at_most(1e3),
+           F::number("bin", "outlet statistics bin (the paper: 1 s)", "s").with_default(1).at_least(1e-3).at_most(1e3),
            F::number("sink_depth_mm", "particles this far below the outlet are counted and removed", "mm", units::mm).with_default(100).above(0).at_most(1e4),
            F::number("stall_time", "no outflow for this long = stopped flow (arching)", "s").with_default(5).above(0).at_most(1e4),
            F::number("max_time", "longest discharge", "s").with_default(600).above(0).at_most(1e6),
