@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Helpers of the small-assembly tests (VERIFICATION.md 4.4): soft, dry grains, simulations with
-// dt = t_col/50, random deposition without overlaps, and bulk measurements (kinetic energy,
-// largest overlap, solid fraction in a sub-volume). Every measured number is printed and also
-// recorded as a GoogleTest property, so a run with --gtest_output=json keeps it.
+// dt = t_col/50 and two threads, random deposition without overlaps, and bulk measurements
+// (kinetic energy, largest overlap, solid fraction in a sub-volume). Every measured number is
+// printed and also recorded as a GoogleTest property, so a run with --gtest_output=json keeps it.
 #pragma once
 #include <gtest/gtest.h>
 
@@ -10,7 +10,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <string>
@@ -29,8 +28,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kG = 9.81;
 
 struct Grain {
-  double d = 4e-3;     // m
-  double rho = 1500;   // kg/m^3
+  double d = 4e-3;    // m
+  double rho = 1500;  // kg/m^3
   double radius() const { return 0.5 * d; }
   double volume() const { return kPi / 6.0 * d * d * d; }
   double mass() const { return rho * volume(); }
@@ -56,7 +55,7 @@ inline std::unique_ptr<Simulation> make_sim(const test::Laws& particle, const te
   s.dt = model.pair_collision_time(0, 0, g.mass(), g.mass()) / 50.0;
   s.gravity = {0.0, 0.0, -kG};
   s.skin = skin_over_d * g.d;
-  s.threads = std::getenv("ITHREADS") ? std::atoi(std::getenv("ITHREADS")) : 2;
+  s.threads = 2;
   return std::make_unique<Simulation>(std::move(model), s);
 }
 
@@ -79,21 +78,23 @@ class PointGrid {
 
  private:
   long long key(const Vec3& x, int dx, int dy, int dz) const {
-    const auto c = [&](double v, int o) { return static_cast<long long>(std::floor(v / cell_)) + o; };
+    const auto c = [&](double v, int o) {
+      return static_cast<long long>(std::floor(v / cell_)) + o;
+    };
     return ((c(x.x, dx) + 4096) * 8192 + (c(x.y, dy) + 4096)) * 8192 + (c(x.z, dz) + 4096);
   }
   double cell_;
   std::unordered_map<long long, std::vector<std::size_t>> cells_;
 };
 
-// Random sequential addition: up to n spheres with centres uniform in the box [lo, hi] where
-// inside(x) holds, none overlapping each other or the particles already present (gap >= `gap`).
-// Returns how many were placed (fewer if `attempts` candidates were not enough).
+// Random sequential addition: up to n spheres at rest with centres uniform in the box [lo, hi]
+// where inside(x) holds, none overlapping each other or the particles already present. Returns
+// how many were placed (fewer if two million candidates were not enough).
 inline int add_random(Simulation& sim, const Grain& g, const Vec3& lo, const Vec3& hi, int n,
-                      Random& rng, const std::function<bool(const Vec3&)>& inside = {},
-                      const Vec3& v0 = {}, double gap = 0.0, long attempts = 2000000) {
+                      Random& rng, const std::function<bool(const Vec3&)>& inside = {}) {
   ParticleStore& p = sim.particles();
-  const double min_dist = g.d + gap;
+  const double min_dist = g.d;
+  const long attempts = 2000000;
   PointGrid grid(min_dist);
   for (std::size_t i = 0; i < p.size(); ++i) grid.insert(p.x[i], i);
   std::vector<Vec3> placed;
@@ -111,33 +112,9 @@ inline int add_random(Simulation& sim, const Grain& g, const Vec3& lo, const Vec
     placed.push_back(x);
     ++added;
   }
-  for (const Vec3& x : placed) p.add(x, v0, {}, g.radius(), g.mass(), 0);
+  for (const Vec3& x : placed) p.add(x, {}, {}, g.radius(), g.mass(), 0);
   sim.request_rebuild();
   return added;
-}
-
-// Jittered simple-cubic lattice of spacing `a` (a - 2 jitter >= d: no overlaps among the new
-// particles), filled layer by layer upwards from `lo` while inside(x) holds and until n particles
-// are placed; the lattice is shifted at random in x and y. Returns the height of the top layer.
-inline double add_lattice(Simulation& sim, const Grain& g, const Vec3& lo, const Vec3& hi, double a,
-                          double jitter, int n, Random& rng,
-                          const std::function<bool(const Vec3&)>& inside = {}) {
-  ParticleStore& p = sim.particles();
-  const double sx = rng.uniform(0.0, a), sy = rng.uniform(0.0, a);
-  int added = 0;
-  double z = lo.z;
-  for (; added < n; z += a) {
-    for (double y = lo.y + sy; y <= hi.y && added < n; y += a)
-      for (double x = lo.x + sx; x <= hi.x && added < n; x += a) {
-        const Vec3 c{x + rng.uniform(-jitter, jitter), y + rng.uniform(-jitter, jitter),
-                     z + rng.uniform(-jitter, jitter)};
-        if (inside && !inside(c)) continue;
-        p.add(c, {}, {}, g.radius(), g.mass(), 0);
-        ++added;
-      }
-  }
-  sim.request_rebuild();
-  return z - a;
 }
 
 inline double kinetic_energy(const ParticleStore& p) {
@@ -145,12 +122,6 @@ inline double kinetic_energy(const ParticleStore& p) {
   for (std::size_t i = 0; i < p.size(); ++i)
     e += 0.5 * p.mass[i] * norm2(p.v[i]) + 0.5 / p.inv_inertia[i] * norm2(p.omega[i]);
   return e;
-}
-
-inline double max_speed(const ParticleStore& p) {
-  double v2 = 0.0;
-  for (const Vec3& v : p.v) v2 = std::max(v2, norm2(v));
-  return std::sqrt(v2);
 }
 
 // Largest particle-particle or particle-wall overlap (m). The neighbour list holds every pair
@@ -187,9 +158,10 @@ inline double solid_fraction(const ParticleStore& p, const Vec3& lo, const Vec3&
   for (long k = 0; k < nz; ++k)
     for (long j = 0; j < ny; ++j)
       for (long i = 0; i < nx; ++i) {
-        const Vec3 x{lo.x + (static_cast<double>(i) + 0.5) * (hi.x - lo.x) / static_cast<double>(nx),
-                     lo.y + (static_cast<double>(j) + 0.5) * (hi.y - lo.y) / static_cast<double>(ny),
-                     lo.z + (static_cast<double>(k) + 0.5) * (hi.z - lo.z) / static_cast<double>(nz)};
+        const Vec3 x{
+            lo.x + (static_cast<double>(i) + 0.5) * (hi.x - lo.x) / static_cast<double>(nx),
+            lo.y + (static_cast<double>(j) + 0.5) * (hi.y - lo.y) / static_cast<double>(ny),
+            lo.z + (static_cast<double>(k) + 0.5) * (hi.z - lo.z) / static_cast<double>(nz)};
         if (inside && !inside(x)) continue;
         ++total;
         bool hit = false;
@@ -201,8 +173,8 @@ inline double solid_fraction(const ParticleStore& p, const Vec3& lo, const Vec3&
   return total > 0 ? static_cast<double>(in) / static_cast<double>(total) : 0.0;
 }
 
-// Runs in chunks of `chunk` seconds until the kinetic energy per particle is below `ke_per_particle`
-// (or t_max is reached); returns the simulated time used.
+// Runs in chunks of `chunk` seconds until the kinetic energy per particle is below
+// `ke_per_particle` (or t_max is reached); returns the simulated time used.
 inline double settle(Simulation& sim, double ke_per_particle, double t_max, double chunk = 0.01) {
   const double t0 = sim.time();
   while (sim.time() - t0 < t_max) {
