@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: MIT
 // `silodem run CASE.toml --out DIR`: a generic case (walls + placed particles, trajectories as
 // CSV) or a silo case (layered fill, discharge, outlet statistics, fill report, summary).
+#include <fmt/format.h>
+#include <toml++/toml.h>
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "app/commands.hpp"
 #include "app/progress.hpp"
@@ -91,11 +91,11 @@ int run_generic(const RunOptions& o, const Case& c, const CaseReport& report, Co
     while (sim->time() + 0.5 * sim->dt() < c.time.end_time) {
       sim->run_steps(std::min(100L, total - sim->step_count()));
       const double frac = double(sim->step_count()) / double(total);
-      progress.show(fmt::format("t = {:.4f} / {:.4f} s  steps {}  particles {}  wall {:.0f} s  "
-                                "ETA {:.0f} s",
-                                sim->time(), c.time.end_time, sim->step_count(),
-                                sim->particles().size(), progress.elapsed(),
-                                progress.elapsed() * (1.0 / std::max(frac, 1e-9) - 1.0)));
+      progress.show(
+          fmt::format("t = {:.4f} / {:.4f} s  steps {}  particles {}  wall {:.0f} s  "
+                      "ETA {:.0f} s",
+                      sim->time(), c.time.end_time, sim->step_count(), sim->particles().size(),
+                      progress.elapsed(), progress.elapsed() * (1.0 / std::max(frac, 1e-9) - 1.0)));
     }
     if (c.output.every == 0 || sim->step_count() % c.output.every != 0)
       write_rows(traj, *sim, c.output.ids);
@@ -125,10 +125,10 @@ int run_generic(const RunOptions& o, const Case& c, const CaseReport& report, Co
 // ---- silo case ------------------------------------------------------------------------------
 
 void write_fill_csv(const fs::path& path, const Case& c, const FillReport& f) {
-  CsvWriter w(path.string(), {"segment", "coal", "z_low_m", "z_high_m", "z_low_settled_m",
-                              "z_high_settled_m", "particles", "mass_kg", "target_mass_kg",
-                              "bulk_density_kg_m3", "measured_bulk_density_kg_m3",
-                              "solid_fraction", "settle_time_s", "settled"});
+  CsvWriter w(path.string(),
+              {"segment", "coal", "z_low_m", "z_high_m", "z_low_settled_m", "z_high_settled_m",
+               "particles", "mass_kg", "target_mass_kg", "bulk_density_kg_m3",
+               "measured_bulk_density_kg_m3", "solid_fraction", "settle_time_s", "settled"});
   auto num = [](double x) { return fmt::format("{}", x); };
   for (const auto& s : f.segments)
     w.row(std::vector<std::string>{
@@ -178,11 +178,11 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
     dis = discharge(*sim, c.silo.geometry, valve, c.discharge, [&](const DischargeState& s) {
       const double wall = progress.elapsed() - fill_wall;
       const double frac = s.discharged / std::max(s.filled, 1e-30);
-      progress.show(fmt::format("discharge t = {:.2f} s  particles left {}  out {:.3f} kg ({:.1f}%)  "
-                                "rate {:.3f} kg/s  wall {:.0f} s  ETA {}",
-                                s.t, s.particles_left, s.discharged, 100 * frac, s.recent_rate,
-                                progress.elapsed(),
-                                frac > 0.01 ? fmt::format("{:.0f} s", wall * (1 / frac - 1)) : "?"));
+      progress.show(fmt::format(
+          "discharge t = {:.2f} s  particles left {}  out {:.3f} kg ({:.1f}%)  "
+          "rate {:.3f} kg/s  wall {:.0f} s  ETA {}",
+          s.t, s.particles_left, s.discharged, 100 * frac, s.recent_rate, progress.elapsed(),
+          frac > 0.01 ? fmt::format("{:.0f} s", wall * (1 / frac - 1)) : "?"));
     });
     progress.finish();
     if (dis.end == DischargeEnd::Error) error = dis.error;
@@ -202,11 +202,12 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
       std::fabs(dis.filled_mass - (dis.remaining_mass + dis.discharged_mass + dis.lost_mass));
   std::vector<double> out_per_coal(c.coals.size(), 0.0);
   for (const auto& r : dis.outflow) out_per_coal[std::size_t(r.coal)] += r.mass;
-  const char* end = !filled                                ? "error during the fill"
-                    : dis.end == DischargeEnd::Emptied     ? "emptied"
-                    : dis.end == DischargeEnd::FlowStopped ? "flow stopped (no outflow for stall_time)"
-                    : dis.end == DischargeEnd::Error       ? "error during the discharge"
-                                                           : "time limit";
+  const char* end = !filled                            ? "error during the fill"
+                    : dis.end == DischargeEnd::Emptied ? "emptied"
+                    : dis.end == DischargeEnd::FlowStopped
+                        ? "flow stopped (no outflow for stall_time)"
+                    : dis.end == DischargeEnd::Error ? "error during the discharge"
+                                                     : "time limit";
   toml::array fill_warnings;
   for (const auto& w : fill.warnings) fill_warnings.push_back(w);
   toml::table summary{
@@ -243,11 +244,12 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
     fmt::print(stderr, "simulation error: {}\n", error);
     return kExitSimulation;
   }
-  fmt::print("{}: {:.3f} of {:.3f} kg out in {:.2f} s (mean {:.3f} kg/s), {:.3f} kg left, {:.3g} kg "
-             "lost; wrote {}\n",
-             end, dis.discharged_mass, dis.filled_mass, dis.discharge_time,
-             dis.discharge_time > 0 ? dis.discharged_mass / dis.discharge_time : 0.0,
-             dis.remaining_mass, dis.lost_mass, out.string());
+  fmt::print(
+      "{}: {:.3f} of {:.3f} kg out in {:.2f} s (mean {:.3f} kg/s), {:.3f} kg left, {:.3g} kg "
+      "lost; wrote {}\n",
+      end, dis.discharged_mass, dis.filled_mass, dis.discharge_time,
+      dis.discharge_time > 0 ? dis.discharged_mass / dis.discharge_time : 0.0, dis.remaining_mass,
+      dis.lost_mass, out.string());
   // A stopped flow is a result, not a success: the silo did not empty.
   return dis.end == DischargeEnd::Emptied ? kExitOk : kExitNotEmptied;
 }

@@ -40,7 +40,8 @@ struct Field {
   static Field vec3(std::string key, std::string doc, std::string unit = {}, double to_si = 1.0);
   static Field integer_list(std::string key, std::string doc);
   // Numbers in case-file units, each checked against the range.
-  static Field number_list(std::string key, std::string doc, std::string unit = {}, double to_si = 1.0);
+  static Field number_list(std::string key, std::string doc, std::string unit = {},
+                           double to_si = 1.0);
   Field& with_default(double v) {
     default_number = v;
     return *this;

@@ -84,14 +84,16 @@ std::string case_report_text(const Case& c, const CaseReport& r) {
   s += fmt::format("shortest collision t_col {:.4e} s; time step {:.4e} s; t_col / dt = {:.1f}\n",
                    r.collision_time_min, r.time_step, r.collision_time_min / r.time_step);
   if (c.silo.present) {
-    s += fmt::format("silo: outlet {:g} mm, cone {:g} mm to {:g} mm, half-angle {:.2f} deg; scenario {}\n",
-                     c.silo.geometry.outlet_diameter * 1e3, c.silo.geometry.cone_height * 1e3,
-                     c.silo.geometry.cylinder_diameter * 1e3,
-                     c.silo.geometry.half_angle() * 180.0 / 3.14159265358979323846, c.fill.scenario);
+    s += fmt::format(
+        "silo: outlet {:g} mm, cone {:g} mm to {:g} mm, half-angle {:.2f} deg; scenario {}\n",
+        c.silo.geometry.outlet_diameter * 1e3, c.silo.geometry.cone_height * 1e3,
+        c.silo.geometry.cylinder_diameter * 1e3,
+        c.silo.geometry.half_angle() * 180.0 / 3.14159265358979323846, c.fill.scenario);
     double total = 0.0;
     for (const auto& sp : r.fill_plan) {
-      s += fmt::format("  H{}  {:<12} z {:.4f}-{:.4f} m  {:.4f} m^3  {:.3f} kg at the measured bulk density\n",
-                       sp.index, c.coals[std::size_t(sp.coal)].name, sp.z_low, sp.z_high, sp.volume, sp.mass);
+      s += fmt::format(
+          "  H{}  {:<12} z {:.4f}-{:.4f} m  {:.4f} m^3  {:.3f} kg at the measured bulk density\n",
+          sp.index, c.coals[std::size_t(sp.coal)].name, sp.z_low, sp.z_high, sp.volume, sp.mass);
       total += sp.mass;
     }
     s += fmt::format("  fill {:.3f} kg; inventory calorific value (Eq. 17) {:.1f} kcal/kg\n", total,

@@ -61,22 +61,22 @@ struct SiloSpec {
 };
 
 struct FillSpec {
-  std::string scenario;           // "L3-I2", top first
+  std::string scenario;  // "L3-I2", top first
   SourcePlace scenario_place;
-  int segments = 5;               // equal height segments of the fill height (H1 at the bottom)
-  double fill_height = 0.0;       // m; 0 = the cone height (E7)
-  FillMode mode = FillMode::Mass; // by mass (measured bulk density x volume) or by volume (E13)
-  double lattice_gap = 0.05;      // spacing of inserted particles = d_max (1 + gap)
-  double settle_ke = 1e-8;        // J per particle: settled below this kinetic energy
-  double settle_max_time = 3.0;   // s of simulated settling per segment at most
+  int segments = 5;                // equal height segments of the fill height (H1 at the bottom)
+  double fill_height = 0.0;        // m; 0 = the cone height (E7)
+  FillMode mode = FillMode::Mass;  // by mass (measured bulk density x volume) or by volume (E13)
+  double lattice_gap = 0.05;       // spacing of inserted particles = d_max (1 + gap)
+  double settle_ke = 1e-8;         // J per particle: settled below this kinetic energy
+  double settle_max_time = 3.0;    // s of simulated settling per segment at most
 };
 
 struct DischargeSpec {
-  double bin = 1.0;               // s, outlet statistics bin
-  double sink_depth = 0.1;        // m below the outlet where particles are removed and counted
-  double stall_time = 5.0;        // s without outflow = stopped flow (arching)
-  double max_time = 600.0;        // s of discharge at most
-  double target_fraction = 0.995; // of the filled mass: discharged = done
+  double bin = 1.0;                // s, outlet statistics bin
+  double sink_depth = 0.1;         // m below the outlet where particles are removed and counted
+  double stall_time = 5.0;         // s without outflow = stopped flow (arching)
+  double max_time = 600.0;         // s of discharge at most
+  double target_fraction = 0.995;  // of the filled mass: discharged = done
 };
 
 struct Case {

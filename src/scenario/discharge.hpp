@@ -38,7 +38,7 @@ struct DischargeResult {
   double discharge_time = 0.0;  // s from the valve opening to the last particle out
   double end_time = 0.0;        // s simulated after the valve opened
   DischargeEnd end = DischargeEnd::TimeLimit;
-  std::string error;            // DischargeEnd::Error: what went wrong (results up to then kept)
+  std::string error;  // DischargeEnd::Error: what went wrong (results up to then kept)
   long steps = 0;
 };
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "scenario/layered_filling.hpp"
 
+#include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "core/constants.hpp"
 #include "scenario/size_distribution.hpp"
@@ -65,8 +65,8 @@ long insert_lattice(Simulation& sim, const SiloGeometry& g, const CoalProperties
 // Runs until the kinetic energy per particle is below the threshold at three checks in a row, and
 // at least for `min_time` (inserted particles start at rest: the energy is low before they fall);
 // returns the simulated time.
-double settle(Simulation& sim, double ke_threshold, double min_time, double max_time,
-              bool& settled, const Progress& progress, const std::string& what) {
+double settle(Simulation& sim, double ke_threshold, double min_time, double max_time, bool& settled,
+              const Progress& progress, const std::string& what) {
   const double t0 = sim.time();
   const long check = std::max(1L, long(2e-3 / sim.dt()));  // every 2 ms of simulated time
   settled = false;
@@ -126,7 +126,8 @@ double surface_height(const ParticleStore& p, const SiloGeometry& g, double d) {
     vol[std::size_t(k)] += kPi / 6.0 * 8.0 * p.radius[i] * p.radius[i] * p.radius[i];
   }
   std::vector<double> phi(static_cast<std::size_t>(n));
-  for (int k = 0; k < n; ++k) phi[std::size_t(k)] = vol[std::size_t(k)] / g.volume(k * d, (k + 1) * d);
+  for (int k = 0; k < n; ++k)
+    phi[std::size_t(k)] = vol[std::size_t(k)] / g.volume(k * d, (k + 1) * d);
   std::vector<double> sorted(phi.begin(), phi.begin() + std::max(1, int(0.8 * n)));
   std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
   const double half = 0.5 * sorted[sorted.size() / 2];
@@ -178,30 +179,34 @@ FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& seg
       insert_lattice(sim, g, coal, samplers[std::size_t(ci)], ci, start, seg.target_mass,
                      c.fill.lattice_gap, rng);
       seg.settle_time = settle(sim, c.fill.settle_ke, fall_time(sim.particles(), start),
-                             c.fill.settle_max_time, seg.settled, progress, what);
+                               c.fill.settle_max_time, seg.settled, progress, what);
     } else {
       // By volume: over-fill (at most random close packing), settle, cut at the segment top,
       // settle again.
       const double mass = 0.64 * coal.true_density * g.volume(std::max(start, 0.0), seg.z_high);
-      insert_lattice(sim, g, coal, samplers[std::size_t(ci)], ci, start, mass, c.fill.lattice_gap, rng);
+      insert_lattice(sim, g, coal, samplers[std::size_t(ci)], ci, start, mass, c.fill.lattice_gap,
+                     rng);
       seg.settle_time = settle(sim, c.fill.settle_ke, fall_time(sim.particles(), start),
-                             c.fill.settle_max_time, seg.settled, progress, what);
+                               c.fill.settle_max_time, seg.settled, progress, what);
       std::vector<std::size_t> above;
       const auto& p = sim.particles();
       for (std::size_t i = 0; i < p.size(); ++i)
         if (p.id[i] >= first_id.back() && p.x[i].z > seg.z_high) above.push_back(i);
       if (top_of_bed(p, 0.0) < seg.z_high)
-        r.warnings.push_back(fmt::format("{}: the settled bed did not reach the segment top", what));
+        r.warnings.push_back(
+            fmt::format("{}: the settled bed did not reach the segment top", what));
       sim.remove_particles(above);
       bool again = false;
-      seg.settle_time += settle(sim, c.fill.settle_ke, 0.05, c.fill.settle_max_time, again, progress, what);
+      seg.settle_time +=
+          settle(sim, c.fill.settle_ke, 0.05, c.fill.settle_max_time, again, progress, what);
       seg.settled = seg.settled && again;
       seg.target_mass = 0.0;
     }
     if (!seg.settled)
-      r.warnings.push_back(fmt::format("{}: not settled after {:g} s (kinetic energy per particle "
-                                       "still above {:g} J)",
-                                       what, c.fill.settle_max_time, c.fill.settle_ke));
+      r.warnings.push_back(
+          fmt::format("{}: not settled after {:g} s (kinetic energy per particle "
+                      "still above {:g} J)",
+                      what, c.fill.settle_max_time, c.fill.settle_ke));
     r.settle_time += seg.settle_time;
     r.segments.push_back(seg);
   }
@@ -214,16 +219,18 @@ FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& seg
   for (std::size_t s = 0; s < r.segments.size(); ++s) {
     auto& seg = r.segments[s];
     for (std::size_t i = 0; i < p.size(); ++i)
-      if (p.id[i] >= first_id[s] && p.id[i] < first_id[s + 1]) ++seg.particles, seg.mass += p.mass[i];
+      if (p.id[i] >= first_id[s] && p.id[i] < first_id[s + 1])
+        ++seg.particles, seg.mass += p.mass[i];
     seg.z_low_settled = s == 0 ? 0.0 : r.segments[s - 1].z_high_settled;
-    seg.z_high_settled = s + 1 < r.segments.size()
-                             ? balanced_cut(p, first_id[s], first_id[s + 1], first_id[s + 1], first_id[s + 2])
-                             : surface_height(p, g, d_max);
+    seg.z_high_settled = s + 1 < r.segments.size() ? balanced_cut(p, first_id[s], first_id[s + 1],
+                                                                  first_id[s + 1], first_id[s + 2])
+                                                   : surface_height(p, g, d_max);
     const double v = g.volume(seg.z_low_settled, seg.z_high_settled);
     seg.bulk_density = v > 0 ? seg.mass / v : 0.0;
     seg.solid_fraction = seg.bulk_density / c.coals[std::size_t(seg.coal)].true_density;
     if (s + 1 < r.segments.size())
-      r.max_boundary_offset = std::max(r.max_boundary_offset, std::fabs(seg.z_high_settled - seg.z_high));
+      r.max_boundary_offset =
+          std::max(r.max_boundary_offset, std::fabs(seg.z_high_settled - seg.z_high));
     r.particles += seg.particles;
     r.mass += seg.mass;
   }

@@ -14,16 +14,16 @@
 namespace silodem {
 
 struct SegmentReport {
-  int index = 0;                 // 1 = H1 (bottom)
+  int index = 0;  // 1 = H1 (bottom)
   int coal = 0;
-  double z_low = 0, z_high = 0;  // nominal segment bounds (m)
+  double z_low = 0, z_high = 0;                  // nominal segment bounds (m)
   double z_low_settled = 0, z_high_settled = 0;  // where its particles ended up (m)
   long particles = 0;
   double mass = 0.0, target_mass = 0.0;  // kg
-  double bulk_density = 0.0;     // kg/m^3 of the settled layer (mass / volume it occupies)
-  double bulk_density_measured = 0.0;  // the coal's measured value
-  double solid_fraction = 0.0;   // bulk_density / true density
-  double settle_time = 0.0;      // s of simulated settling after this segment's insertion
+  double bulk_density = 0.0;             // kg/m^3 of the settled layer (mass / volume it occupies)
+  double bulk_density_measured = 0.0;    // the coal's measured value
+  double solid_fraction = 0.0;           // bulk_density / true density
+  double settle_time = 0.0;              // s of simulated settling after this segment's insertion
   bool settled = false;
 };
 
@@ -31,7 +31,7 @@ struct FillReport {
   std::vector<SegmentReport> segments;
   long particles = 0;
   double mass = 0.0;
-  double settle_time = 0.0;  // total simulated settling time (s)
+  double settle_time = 0.0;          // total simulated settling time (s)
   double max_boundary_offset = 0.0;  // |settled - nominal| over internal boundaries (m)
   std::vector<std::string> warnings;
 };

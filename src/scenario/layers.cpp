@@ -17,10 +17,13 @@ std::vector<Layer> parse_scenario(const std::string& name) {
   if (name.empty()) fail("empty");
   while (i < name.size()) {
     Layer l;
-    while (i < name.size() && std::isalpha(static_cast<unsigned char>(name[i]))) l.symbol += name[i++];
-    if (l.symbol.empty()) fail("a layer must start with a coal symbol at position " + std::to_string(i + 1));
+    while (i < name.size() && std::isalpha(static_cast<unsigned char>(name[i])))
+      l.symbol += name[i++];
+    if (l.symbol.empty())
+      fail("a layer must start with a coal symbol at position " + std::to_string(i + 1));
     std::string digits;
-    while (i < name.size() && std::isdigit(static_cast<unsigned char>(name[i]))) digits += name[i++];
+    while (i < name.size() && std::isdigit(static_cast<unsigned char>(name[i])))
+      digits += name[i++];
     if (digits.empty()) fail("layer '" + l.symbol + "' has no segment count");
     if (digits.size() > 3) fail("segment count '" + digits + "' is too large");
     l.segments = std::stoi(digits);

@@ -16,8 +16,8 @@ struct OutletBin {
   double calorific = 0.0;        // kcal/kg; NaN when nothing left in the bin
 };
 
-std::vector<OutletBin> outlet_bins(const std::vector<OutletRecord>& out, double bin,
-                                   double t_end, const std::vector<double>& heating_values);
+std::vector<OutletBin> outlet_bins(const std::vector<OutletRecord>& out, double bin, double t_end,
+                                   const std::vector<double>& heating_values);
 
 // Eq. 17 over a mass inventory: sum_c m_c Q_c / sum_c m_c.
 double mixture_calorific(const std::vector<double>& mass_per_coal,

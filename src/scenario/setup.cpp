@@ -62,7 +62,8 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
   // Masses present: the coals' CG particles and any explicitly sized particle.
   std::vector<double> min_mass(c.coals.size(), 0.0);
   for (std::size_t a = 0; a < c.coals.size(); ++a)
-    min_mass[a] = sphere_mass(SizeSampler(c.coals[a], c.cg).min_diameter(), c.coals[a].true_density);
+    min_mass[a] =
+        sphere_mass(SizeSampler(c.coals[a], c.cg).min_diameter(), c.coals[a].true_density);
   for (const auto& p : c.particles)
     if (p.diameter > 0)
       min_mass[p.coal] =
@@ -103,13 +104,15 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
   if (c.silo.present) {
     const SiloGeometry& g = c.silo.geometry;
     const std::vector<std::string> seg = segments_bottom_up(parse_scenario(c.fill.scenario));
-    const double h = (c.fill.fill_height > 0 ? c.fill.fill_height : g.cone_height) / c.fill.segments;
+    const double h =
+        (c.fill.fill_height > 0 ? c.fill.fill_height : g.cone_height) / c.fill.segments;
     std::vector<double> mass_per_coal(c.coals.size(), 0.0), q;
     for (const auto& coal : c.coals) q.push_back(coal.heating_value);
     for (std::size_t s = 0; s < seg.size(); ++s) {
       SegmentPlan sp;
       sp.index = int(s) + 1;
-      sp.coal = int(std::find(c.coal_symbols.begin(), c.coal_symbols.end(), seg[s]) - c.coal_symbols.begin());
+      sp.coal = int(std::find(c.coal_symbols.begin(), c.coal_symbols.end(), seg[s]) -
+                    c.coal_symbols.begin());
       sp.z_low = double(s) * h;
       sp.z_high = double(s + 1) * h;
       sp.volume = g.volume(sp.z_low, sp.z_high);

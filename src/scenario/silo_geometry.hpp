@@ -20,7 +20,7 @@ struct SiloGeometry {
   double outlet_radius() const { return 0.5 * outlet_diameter; }
   double top_radius() const { return 0.5 * cylinder_diameter; }
   double total_height() const { return cone_height + cylinder_height; }
-  double half_angle() const;        // rad, cone half-angle from the vertical
+  double half_angle() const;         // rad, cone half-angle from the vertical
   double radius_at(double z) const;  // wall radius at height z (outlet radius below z = 0)
   // Volume inside the walls between heights z0 < z1 (>= 0).
   double volume(double z0, double z1) const;

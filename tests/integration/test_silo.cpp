@@ -4,8 +4,8 @@
 // orders (Eq. 17).
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 
 #include "io/config/load.hpp"
 #include "scenario/discharge.hpp"
@@ -101,7 +101,8 @@ SmallRun run_small(const std::string& scenario, double bond_number, std::uint64_
     ++r.checks;
     const auto& p = sim->particles();
     const double in_silo = total_mass(p);
-    if (std::fabs(in_silo + s.discharged + s.lost - s.filled) > 1e-12 * s.filled) r.ledger_ok = false;
+    if (std::fabs(in_silo + s.discharged + s.lost - s.filled) > 1e-12 * s.filled)
+      r.ledger_ok = false;
     for (std::size_t i = 0; i < p.size(); ++i) r.max_speed = std::max(r.max_speed, norm(p.v[i]));
     if (s.particles_left > n0) r.ledger_ok = false;
   });
@@ -116,7 +117,8 @@ TEST(SmallSilo, TI4_MassBookkeeping) {
   EXPECT_EQ(r.result.end, DischargeEnd::Emptied);
   EXPECT_EQ(r.result.particles_lost, 0);
   EXPECT_NEAR(r.result.filled_mass, r.result.discharged_mass + r.result.remaining_mass, 1e-12);
-  EXPECT_EQ(long(r.result.outflow.size()) + long(std::lround(r.result.remaining_mass / 9.817477042468103e-05)),
+  EXPECT_EQ(long(r.result.outflow.size()) +
+                long(std::lround(r.result.remaining_mass / 9.817477042468103e-05)),
             r.result.particles_filled);
   // Free fall from the top of the fill to the sink bounds every speed.
   const double h = 0.05 + 0.03;

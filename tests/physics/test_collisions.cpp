@@ -82,7 +82,7 @@ Outcome collide(double e, double ratio, bool clip, bool force_zero_ends, double 
 // ends just after a step boundary, and the attractive dashpot force (-eta v_out, MFIX does not
 // clip) then acts for a whole step. That error is O(dt) and is gone at dt = t_col/1000.
 struct Sweep {
-  double median, worst;  // of e_meas / e
+  double median, worst;   // of e_meas / e
   double worst_duration;  // of |duration / t_col - 1|
 };
 Sweep sweep(double e, double ratio, double dt_factor) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "engine/walls/frustum.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 
 namespace silodem {
 namespace {

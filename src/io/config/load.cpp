@@ -11,8 +11,8 @@
 
 #include "engine/walls/wall.hpp"
 #include "io/config/schema.hpp"
-#include "scenario/layers.hpp"
 #include "model/contact/registry.hpp"
+#include "scenario/layers.hpp"
 
 namespace silodem::config {
 namespace {
@@ -511,7 +511,8 @@ Case build(const toml::table& root, const std::string& file) {
     if (!c.particles.empty() || !c.lattices.empty())
       throw v.error("", "a silo case fills itself: remove the [[particle]] and [[lattice]] tables");
     const toml::node* fn = root.get("fill");
-    if (!fn) throw InputError({file, 1, 1}, "fill", "missing: a silo case needs [fill] with a scenario");
+    if (!fn)
+      throw InputError({file, 1, 1}, "fill", "missing: a silo case needs [fill] with a scenario");
     const ParamValues f = r.read(single("fill"), section("fill").fields, "fill");
     c.fill.scenario = f.string("scenario");
     c.fill.scenario_place = f.places.count("scenario") ? f.places.at("scenario") : f.place;
@@ -522,8 +523,9 @@ Case build(const toml::table& root, const std::string& file) {
     c.fill.settle_ke = f.number("settle_ke_per_particle_j");
     c.fill.settle_max_time = f.number("settle_max_time");
     if (c.fill.fill_height > g.total_height())
-      throw f.error("fill_height_mm", fmt::format("= {:g} is above the silo ({:g} mm)",
-                                                  c.fill.fill_height * 1e3, g.total_height() * 1e3));
+      throw f.error("fill_height_mm",
+                    fmt::format("= {:g} is above the silo ({:g} mm)", c.fill.fill_height * 1e3,
+                                g.total_height() * 1e3));
     std::vector<Layer> layers;
     try {
       layers = parse_scenario(c.fill.scenario);
@@ -534,8 +536,9 @@ Case build(const toml::table& root, const std::string& file) {
     for (const auto& l : layers) {
       used += l.segments;
       if (std::find(c.coal_symbols.begin(), c.coal_symbols.end(), l.symbol) == c.coal_symbols.end())
-        throw f.error("scenario", fmt::format("= \"{}\": no coal has the symbol \"{}\" (known: {})",
-                                              c.fill.scenario, l.symbol, fmt::join(c.coal_symbols, ", ")));
+        throw f.error("scenario",
+                      fmt::format("= \"{}\": no coal has the symbol \"{}\" (known: {})",
+                                  c.fill.scenario, l.symbol, fmt::join(c.coal_symbols, ", ")));
     }
     if (used > c.fill.segments)
       throw f.error("scenario", fmt::format("= \"{}\" needs {} segments but fill.segments = {}",
@@ -586,7 +589,8 @@ void apply_override(toml::table& root, const std::string& item) {
   std::size_t start = 0;
   for (;;) {
     const auto dot = key.find('.', start);
-    std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    std::string part =
+        key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
     long index = -1;  // coal[1]
     if (const auto br = part.find('['); br != std::string::npos && part.back() == ']') {
       const std::string digits = part.substr(br + 1, part.size() - br - 2);
@@ -605,7 +609,8 @@ void apply_override(toml::table& root, const std::string& item) {
     if (index >= 0) {
       toml::array* a = next ? next->as_array() : nullptr;
       if (!a || index >= long(a->size()) || !(*a)[std::size_t(index)].is_table())
-        throw InputError(here, key, "no table " + part + "[" + std::to_string(index) + "] in the case");
+        throw InputError(here, key,
+                         "no table " + part + "[" + std::to_string(index) + "] in the case");
       t = (*a)[std::size_t(index)].as_table();
     } else {
       if (!next) next = &t->insert_or_assign(part, toml::table{}).first->second;

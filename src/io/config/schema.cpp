@@ -66,7 +66,10 @@ const std::vector<Section>& sections() {
        true,
        {
            F::text("name", "name used by particles, lattices and reports", {}),
-           F::text("symbol", "letter(s) used in scenario names such as \"L3-I2\" (default: first letter of the name)", {}, "-"),
+           F::text("symbol",
+                   "letter(s) used in scenario names such as \"L3-I2\" (default: first letter of "
+                   "the name)",
+                   {}, "-"),
            F::number("diameter_mm", "average particle diameter (the DEM size before k)", "mm",
                      units::mm)
                .needed()
@@ -101,7 +104,9 @@ const std::vector<Section>& sections() {
            F::number("cohesion_force_n", "F_L of one original particle, replacing Eq. 14", "N")
                .at_least(0)
                .at_most(1e6),
-           F::number_list("sieve_diameters_mm", "size classes of a measured distribution (DEM sizes before k)", "mm", units::mm)
+           F::number_list("sieve_diameters_mm",
+                          "size classes of a measured distribution (DEM sizes before k)", "mm",
+                          units::mm)
                .above(0)
                .at_most(1e4),
            F::number_list("sieve_mass_fractions", "mass fraction of each size class (sum 1)")
@@ -109,36 +114,89 @@ const std::vector<Section>& sections() {
                .at_most(1),
        }},
       {"silo",
-       "the laboratory silo (PHYSICS.md 5); its presence makes a silo case (fill + discharge). Defaults: the paper's silo",
+       "the laboratory silo (PHYSICS.md 5); its presence makes a silo case (fill + discharge). "
+       "Defaults: the paper's silo",
        false,
        {
-           F::number("outlet_diameter_mm", "outlet diameter", "mm", units::mm).with_default(50).above(0).at_most(1e4),
-           F::number("cone_height_mm", "height of the conical hopper", "mm", units::mm).with_default(633).above(0).at_most(1e5),
-           F::number("cylinder_diameter_mm", "diameter of the cylinder (top of the cone)", "mm", units::mm).with_default(468).above(0).at_most(1e5),
-           F::number("cylinder_height_mm", "height of the cylinder above the cone", "mm", units::mm).with_default(318).at_least(0).at_most(1e5),
-           F::number("valve_gap_mm", "distance of the valve plate below the outlet", "mm", units::mm).with_default(0).at_least(0).at_most(1e3),
+           F::number("outlet_diameter_mm", "outlet diameter", "mm", units::mm)
+               .with_default(50)
+               .above(0)
+               .at_most(1e4),
+           F::number("cone_height_mm", "height of the conical hopper", "mm", units::mm)
+               .with_default(633)
+               .above(0)
+               .at_most(1e5),
+           F::number("cylinder_diameter_mm", "diameter of the cylinder (top of the cone)", "mm",
+                     units::mm)
+               .with_default(468)
+               .above(0)
+               .at_most(1e5),
+           F::number("cylinder_height_mm", "height of the cylinder above the cone", "mm", units::mm)
+               .with_default(318)
+               .at_least(0)
+               .at_most(1e5),
+           F::number("valve_gap_mm", "distance of the valve plate below the outlet", "mm",
+                     units::mm)
+               .with_default(0)
+               .at_least(0)
+               .at_most(1e3),
        }},
       {"fill",
        "layered filling (PHYSICS.md 5, E7, E13)",
        false,
        {
-           F::text("scenario", "coals from the top down with their segment counts, e.g. \"L3-I2\"", {}),
-           F::integer("segments", "equal height segments of the fill height (H1 at the bottom)").with_default(5).at_least(1).at_most(100),
-           F::number("fill_height_mm", "height of the fill; 0 = the cone height (E7)", "mm", units::mm).with_default(0).at_least(0).at_most(1e5),
-           F::text("mode", "mass: each segment gets the measured bulk density x its volume; volume: settle until the segment is full", {"mass", "volume"}, "mass"),
-           F::number("lattice_gap", "inserted particles sit on a lattice of spacing d_max (1 + gap)").with_default(0.05).at_least(0.001).at_most(1),
-           F::number("settle_ke_per_particle_j", "settled when the kinetic energy per particle is below this", "J").with_default(1e-8).above(0).at_most(1),
-           F::number("settle_max_time", "longest settling per segment", "s").with_default(3).above(0).at_most(1e3),
+           F::text("scenario", "coals from the top down with their segment counts, e.g. \"L3-I2\"",
+                   {}),
+           F::integer("segments", "equal height segments of the fill height (H1 at the bottom)")
+               .with_default(5)
+               .at_least(1)
+               .at_most(100),
+           F::number("fill_height_mm", "height of the fill; 0 = the cone height (E7)", "mm",
+                     units::mm)
+               .with_default(0)
+               .at_least(0)
+               .at_most(1e5),
+           F::text("mode",
+                   "mass: each segment gets the measured bulk density x its volume; volume: settle "
+                   "until the segment is full",
+                   {"mass", "volume"}, "mass"),
+           F::number("lattice_gap",
+                     "inserted particles sit on a lattice of spacing d_max (1 + gap)")
+               .with_default(0.05)
+               .at_least(0.001)
+               .at_most(1),
+           F::number("settle_ke_per_particle_j",
+                     "settled when the kinetic energy per particle is below this", "J")
+               .with_default(1e-8)
+               .above(0)
+               .at_most(1),
+           F::number("settle_max_time", "longest settling per segment", "s")
+               .with_default(3)
+               .above(0)
+               .at_most(1e3),
        }},
       {"discharge",
        "the discharge after the valve opens",
        false,
        {
-           F::number("bin", "outlet statistics bin (the paper: 1 s)", "s").with_default(1).at_least(1e-3).at_most(1e3),
-           F::number("sink_depth_mm", "particles this far below the outlet are counted and removed", "mm", units::mm).with_default(100).above(0).at_most(1e4),
-           F::number("stall_time", "no outflow for this long = stopped flow (arching)", "s").with_default(5).above(0).at_most(1e4),
+           F::number("bin", "outlet statistics bin (the paper: 1 s)", "s")
+               .with_default(1)
+               .at_least(1e-3)
+               .at_most(1e3),
+           F::number("sink_depth_mm", "particles this far below the outlet are counted and removed",
+                     "mm", units::mm)
+               .with_default(100)
+               .above(0)
+               .at_most(1e4),
+           F::number("stall_time", "no outflow for this long = stopped flow (arching)", "s")
+               .with_default(5)
+               .above(0)
+               .at_most(1e4),
            F::number("max_time", "longest discharge", "s").with_default(600).above(0).at_most(1e6),
-           F::number("target_fraction", "discharged fraction of the filled mass that ends the run").with_default(0.995).above(0).at_most(1),
+           F::number("target_fraction", "discharged fraction of the filled mass that ends the run")
+               .with_default(0.995)
+               .above(0)
+               .at_most(1),
        }},
       {"particle",
        "one particle placed explicitly",
@@ -184,8 +242,8 @@ const Section& section(const std::string& name) {
 }
 
 std::vector<std::string> top_level_keys() {
-  return {"title", "simulation", "coarse_graining", "coal", "contact", "wall",
-          "particle", "lattice", "output", "silo", "fill", "discharge"};
+  return {"title",    "simulation", "coarse_graining", "coal", "contact", "wall",
+          "particle", "lattice",    "output",          "silo", "fill",    "discharge"};
 }
 
 static std::size_t edit_distance(const std::string& a, const std::string& b) {

@@ -6,12 +6,13 @@
 namespace silodem {
 
 std::vector<Field> cohesion_common_fields(bool wall) {
-  Field factor = Field::number("factor",
-                               "multiplies F_L,cg (Eq. 13-14): a calibration of the moisture force; "
-                               "1 = the paper's")
-                     .with_default(1.0)
-                     .at_least(0)
-                     .at_most(100);
+  Field factor =
+      Field::number("factor",
+                    "multiplies F_L,cg (Eq. 13-14): a calibration of the moisture force; "
+                    "1 = the paper's")
+          .with_default(1.0)
+          .at_least(0)
+          .at_most(100);
   if (wall)
     return {Field::number("wall_factor",
                           "wall cohesive force as a multiple of the particle's own F_L,cg")

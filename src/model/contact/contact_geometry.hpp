@@ -18,10 +18,10 @@ struct ContactGeometry {
   double d_ref = 0.0;            // length that scales cohesion ranges: mean diameter; d_i at a wall
   double rolling_inertia = 0.0;  // I_r of the EPSD law (Ai et al. 2011, Eq. 16)
   double inertia_i = 0.0, inertia_j = 0.0;  // moments of inertia (0 for a wall)
-  Vec3 v_rel;                    // velocity of i's contact point relative to j's
-  double overlap_rate = 0.0;     // d(delta_n)/dt = -v_rel . n
-  Vec3 v_t;                      // tangential part of v_rel
-  Vec3 omega_i, omega_j;         // angular velocities (omega_j = wall's, zero for fixed walls)
+  Vec3 v_rel;                               // velocity of i's contact point relative to j's
+  double overlap_rate = 0.0;                // d(delta_n)/dt = -v_rel . n
+  Vec3 v_t;                                 // tangential part of v_rel
+  Vec3 omega_i, omega_j;  // angular velocities (omega_j = wall's, zero for fixed walls)
 };
 
 struct BodyState {

@@ -41,7 +41,7 @@ struct RollingParams {
   double stiffness_factor = 2.25;    // EPSD: k_r = factor k_n mu_r^2 R_eff^2 (Ai et al. 2011)
   double damping_fraction = 0.3;     // EPSD: eta_r, fraction of critical rolling damping
   bool limit_sees_cohesion = false;  // EPSD limit on |F_n - F_coh| instead of |F_n|
-  bool regularize = true;  // MFIX: smooth the sign(omega) switch near omega = 0
+  bool regularize = true;            // MFIX: smooth the sign(omega) switch near omega = 0
 };
 struct RollingTorque {
   Vec3 on_i, on_j;

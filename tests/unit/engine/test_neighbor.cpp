@@ -124,14 +124,16 @@ TEST(VerletList, StrayParticlesAreFoundAndDoNotBreakTheGrid) {
   ParticleStore p;
   Random rng(5);
   for (int i = 0; i < 3000; ++i)
-    p.add({rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.05)}, {}, {}, 1e-3, 1e-5, 0);
+    p.add({rng.uniform(0, 0.05), rng.uniform(0, 0.05), rng.uniform(0, 0.05)}, {}, {}, 1e-3, 1e-5,
+          0);
   p.add({40.0, -30.0, 100.0}, {}, {}, 1e-3, 1e-5, 0);
   p.add({40.0015, -30.0, 100.0}, {}, {}, 1e-3, 1e-5, 0);
   VerletList list;
   WallList none;
   list.build(p, none, 2e-4, 0.0);
   std::size_t pairs = 0, brute = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) pairs += std::size_t(list.offset[i + 1] - list.offset[i]);
+  for (std::size_t i = 0; i < p.size(); ++i)
+    pairs += std::size_t(list.offset[i + 1] - list.offset[i]);
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = i + 1; j < p.size(); ++j)
       brute += norm2(p.x[i] - p.x[j]) < 2.2e-3 * 2.2e-3 ? 1 : 0;

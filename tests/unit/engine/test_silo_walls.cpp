@@ -94,7 +94,7 @@ TEST(SiloWalls, NoPhantomConeExtensionInTheOutlet) {
   WallHit hit;
   EXPECT_FALSE(w.walls[0]->near({0.024, 0, -0.01}, 0.004, hit));  // cone face: beyond its end
   EXPECT_FALSE(w.walls[1]->near({0.2339, 0, g.cone_height - 0.01}, 0.004, hit));  // cylinder
-  EXPECT_TRUE(w.walls[2]->near({0.024, 0, -0.002}, 0.004, hit));  // the rim
+  EXPECT_TRUE(w.walls[2]->near({0.024, 0, -0.002}, 0.004, hit));                  // the rim
   EXPECT_FALSE(w.walls[2]->near({0.0245, 0, 0.003}, 0.004, hit));  // above the rim: the face acts
 }
 
@@ -115,7 +115,7 @@ TEST(SiloWalls, SlidingDownAcrossTheConeCylinderJoint) {
     o.sim->step();
     max_cylinder_force = std::max(max_cylinder_force, norm(p.f[0] - Vec3{0, 0, -9.81 * o.m}));
   }
-  EXPECT_LT(max_cylinder_force, 1e-9);  // sliding along the cylinder: no wall force at all
+  EXPECT_LT(max_cylinder_force, 1e-9);    // sliding along the cylinder: no wall force at all
   while (p.x[0].z > 0.35) o.sim->step();  // across the joint, bounces damped out (e = 0.3)
   const Vec3 v0 = p.v[0];
   const double t0 = o.sim->time();

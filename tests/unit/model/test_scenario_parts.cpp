@@ -19,11 +19,13 @@ TEST(Scenario, ParsesTopFirst) {
   EXPECT_EQ(l[0].segments, 3);
   EXPECT_EQ(segments_bottom_up(l), (std::vector<std::string>{"I", "I", "L", "L", "L"}));
   EXPECT_EQ(segments_bottom_up(parse_scenario("L2-I1")), (std::vector<std::string>{"I", "L", "L"}));
-  EXPECT_EQ(segments_bottom_up(parse_scenario("I1-L4")), (std::vector<std::string>{"L", "L", "L", "L", "I"}));
+  EXPECT_EQ(segments_bottom_up(parse_scenario("I1-L4")),
+            (std::vector<std::string>{"L", "L", "L", "L", "I"}));
 }
 
 TEST(Scenario, MalformedNamesAreRefusedWithAReason) {
-  for (const char* bad : {"", "L", "3L", "L3-", "L3--I2", "L3I", "L0-I2", "L3+I2", "L2-L3", "L3 I2"}) {
+  for (const char* bad :
+       {"", "L", "3L", "L3-", "L3--I2", "L3I", "L0-I2", "L3+I2", "L2-L3", "L3 I2"}) {
     try {
       parse_scenario(bad);
       ADD_FAILURE() << "accepted '" << bad << "'";
