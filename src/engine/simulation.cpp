@@ -133,6 +133,7 @@ void Simulation::compute_forces() {
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {
       const int mi = p_.material[i];
+      const BodyState bi = body(p_, i);
       for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
         const int j = list_.partner[e];
         const ContactLaw& law = model_.pair(mi, p_.material[j]);
@@ -144,7 +145,7 @@ void Simulation::compute_forces() {
           st = ContactState{};
           continue;
         }
-        const ContactGeometry g = pair_geometry(body(p_, i), body(p_, j));
+        const ContactGeometry g = pair_geometry(bi, body(p_, j));
         const ContactResult r = evaluate_contact(law, g, st, dt);
         fb[i] += r.force_i;
         fb[j] -= r.force_i;

@@ -29,9 +29,8 @@ ContactGeometry pair_geometry(const BodyState& i, const BodyState& j) {
   g.d_i = 2.0 * i.radius;
   g.d_j = 2.0 * j.radius;
   g.d_ref = i.radius + j.radius;
-  // Ai et al. 2011, Eq. 16: I_r^-1 = (I_i + m_i r_i^2)^-1 + (I_j + m_j r_j^2)^-1.
-  g.rolling_inertia = 1.0 / (1.0 / (i.inertia + i.mass * i.radius * i.radius) +
-                             1.0 / (j.inertia + j.mass * j.radius * j.radius));
+  g.mass_i = i.mass;
+  g.mass_j = j.mass;
   g.inertia_i = i.inertia;
   g.inertia_j = j.inertia;
   g.omega_i = i.omega;
@@ -51,7 +50,7 @@ ContactGeometry wall_geometry(const BodyState& i, const Vec3& n, double distance
   g.m_eff = i.mass;
   g.d_i = 2.0 * i.radius;
   g.d_ref = g.d_i;
-  g.rolling_inertia = i.inertia + i.mass * i.radius * i.radius;
+  g.mass_i = i.mass;
   g.inertia_i = i.inertia;
   g.omega_i = i.omega;
   finish_kinematics(g, i.v, v_wall);

@@ -33,7 +33,7 @@ RollingTorque kernel(const RollingParams& p, const ContactGeometry& g, const Nor
     spring *= m > 0.0 ? limit / m : 0.0;
     torque = spring;
   } else {
-    const double c_r = p.damping_fraction * 2.0 * std::sqrt(g.rolling_inertia * k_r);
+    const double c_r = p.damping_fraction * 2.0 * std::sqrt(rolling_inertia(g) * k_r);
     torque = spring - c_r * w;
   }
   return {torque, -torque};
