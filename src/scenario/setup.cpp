@@ -135,45 +135,51 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
   return r;
 }
 
-std::unique_ptr<Simulation> build_silo_simulation(const Case& c, const CaseReport& report,
-                                                  ContactModel model, std::size_t* valve_index,
-                                                  int threads_override) {
+namespace {
+
+// Time step, gravity, skin (a fraction of the smallest CG diameter) and threads of a case.
+SimulationSettings settings_of(const Case& c, const CaseReport& report, double d_min,
+                               int threads_override) {
   SimulationSettings s;
   s.dt = report.time_step;
   s.gravity = c.time.gravity;
-  double d_min = 1e300;
-  for (const auto& coal : c.coals) d_min = std::min(d_min, SizeSampler(coal, c.cg).min_diameter());
   s.skin = c.time.skin * d_min;
   s.threads = threads_override > 0 ? threads_override : c.time.threads;
-  auto sim = std::make_unique<Simulation>(std::move(model), s);
+  return s;
+}
+
+// The [[wall]] tables of a case.
+void add_case_walls(Simulation& sim, const Case& c) {
+  for (const auto& w : c.walls)
+    for (auto& surface : find_wall_type(w.type)->make(w.values)) sim.add_wall(std::move(surface));
+}
+
+}  // namespace
+
+std::unique_ptr<Simulation> build_silo_simulation(const Case& c, const CaseReport& report,
+                                                  ContactModel model, std::size_t* valve_index,
+                                                  int threads_override) {
+  double d_min = 1e300;
+  for (const auto& coal : c.coals) d_min = std::min(d_min, SizeSampler(coal, c.cg).min_diameter());
+  auto sim = std::make_unique<Simulation>(std::move(model),
+                                          settings_of(c, report, d_min, threads_override));
   SiloWalls walls = make_silo_walls(c.silo.geometry);
   const std::size_t first = sim->walls().size();
   for (auto& w : walls.walls) sim->add_wall(std::move(w));
-  for (const auto& w : c.walls) {
-    const WallEntry* e = find_wall_type(w.type);
-    for (auto& surface : e->make(w.values)) sim->add_wall(std::move(surface));
-  }
+  add_case_walls(*sim, c);
   if (valve_index) *valve_index = first + walls.valve_index;
   return sim;
 }
 
 std::unique_ptr<Simulation> build_simulation(const Case& c, const CaseReport& report,
                                              ContactModel model, int threads_override) {
-  SimulationSettings s;
-  s.dt = report.time_step;
-  s.gravity = c.time.gravity;
   double d_min = 1e300;
   for (const auto& cr : report.coals) d_min = std::min(d_min, cr.cg_diameter);
   std::vector<Body> bodies = bodies_of(c);
   for (const auto& b : bodies) d_min = std::min(d_min, b.diameter);
-  s.skin = c.time.skin * d_min;
-  s.threads = threads_override > 0 ? threads_override : c.time.threads;
-  auto sim = std::make_unique<Simulation>(std::move(model), s);
-
-  for (const auto& w : c.walls) {
-    const WallEntry* e = find_wall_type(w.type);
-    for (auto& surface : e->make(w.values)) sim->add_wall(std::move(surface));
-  }
+  auto sim = std::make_unique<Simulation>(std::move(model),
+                                          settings_of(c, report, d_min, threads_override));
+  add_case_walls(*sim, c);
 
   // Refuse overlapping placements (a cell grid keeps this linear in the particle count).
   std::vector<Vec3> xs;
@@ -182,27 +188,17 @@ std::unique_ptr<Simulation> build_simulation(const Case& c, const CaseReport& re
   CellGrid grid;
   grid.build(xs, std::max(d_max, 1e-12), 8 * xs.size() + 64);
   for (std::size_t i = 0; i < bodies.size(); ++i) {
-    const auto cell = grid.cell_of(bodies[i].x);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int cx = cell[0] + dx, cy = cell[1] + dy, cz = cell[2] + dz;
-          const auto& dims = grid.dims();
-          if (cx < 0 || cy < 0 || cz < 0 || cx >= dims[0] || cy >= dims[1] || cz >= dims[2])
-            continue;
-          const int ci = grid.cell_index(cx, cy, cz);
-          for (int k = grid.start()[ci]; k < grid.start()[ci + 1]; ++k) {
-            const std::size_t j = std::size_t(grid.order()[k]);
-            if (j >= i) continue;
-            const double dist = norm(bodies[i].x - bodies[j].x);
-            const double contact = 0.5 * (bodies[i].diameter + bodies[j].diameter);
-            if (dist < contact * (1.0 - 1e-9))
-              throw InputError(bodies[i].place, bodies[i].key + ".position",
-                               fmt::format("overlaps {} (centre distance {:.6g} m < sum of radii "
-                                           "{:.6g} m); placed particles must not overlap",
-                                           bodies[j].key, dist, contact));
-          }
-        }
+    grid.for_each_near(bodies[i].x, [&](int jj) {
+      const std::size_t j = std::size_t(jj);
+      if (j >= i) return;
+      const double dist = norm(bodies[i].x - bodies[j].x);
+      const double contact = 0.5 * (bodies[i].diameter + bodies[j].diameter);
+      if (dist < contact * (1.0 - 1e-9))
+        throw InputError(bodies[i].place, bodies[i].key + ".position",
+                         fmt::format("overlaps {} (centre distance {:.6g} m < sum of radii "
+                                     "{:.6g} m); placed particles must not overlap",
+                                     bodies[j].key, dist, contact));
+    });
   }
   auto& p = sim->particles();
   for (const auto& b : bodies) {

@@ -21,6 +21,21 @@ class CellGrid {
   const std::vector<int>& start() const { return start_; }
   const std::vector<int>& order() const { return order_; }
   double cell_size() const { return cell_; }
+  // Calls f(j) for every particle j in the cell of p and the 26 cells around it.
+  template <class F>
+  void for_each_near(const Vec3& p, F&& f) const {
+    const auto c = cell_of(p);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int cx = c[0] + dx, cy = c[1] + dy, cz = c[2] + dz;
+          if (cx < 0 || cy < 0 || cz < 0 || cx >= dims_[0] || cy >= dims_[1] || cz >= dims_[2])
+            continue;
+          const int cell = cell_index(cx, cy, cz);
+          for (int k = start_[std::size_t(cell)]; k < start_[std::size_t(cell) + 1]; ++k)
+            f(order_[std::size_t(k)]);
+        }
+  }
 
  private:
   Vec3 lo_;

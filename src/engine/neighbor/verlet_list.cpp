@@ -53,30 +53,16 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   for (double r : p.radius) r_max = std::max(r_max, r);
   const double cut_max = 2.0 * r_max * (1.0 + reach_over_d) + skin;
   grid_.build(p.x, cut_max, 8 * n + 64);
-  const auto& dims = grid_.dims();
-  const auto& start = grid_.start();
-  const auto& order = grid_.order();
 
   // Two passes over i (count, then fill) give a CSR list whose order depends only on the
   // particle order, not on the thread count.
   std::vector<int> count(n + 1, 0);
   auto visit = [&](std::size_t i, auto&& emit) {
-    const auto c = grid_.cell_of(p.x[i]);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const int cx = c[0] + dx, cy = c[1] + dy, cz = c[2] + dz;
-          if (cx < 0 || cy < 0 || cz < 0 || cx >= dims[0] || cy >= dims[1] || cz >= dims[2])
-            continue;
-          const int cell = grid_.cell_index(cx, cy, cz);
-          for (int k = start[cell]; k < start[cell + 1]; ++k) {
-            const int j = order[k];
-            if (j <= int(i)) continue;
-            const double sum_r = p.radius[i] + p.radius[j];
-            const double cut = sum_r * (1.0 + reach_over_d) + skin;
-            if (norm2(p.x[i] - p.x[j]) < cut * cut) emit(j);
-          }
-        }
+    grid_.for_each_near(p.x[i], [&](int j) {
+      if (j <= int(i)) return;
+      const double cut = (p.radius[i] + p.radius[j]) * (1.0 + reach_over_d) + skin;
+      if (norm2(p.x[i] - p.x[j]) < cut * cut) emit(j);
+    });
   };
 #pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
