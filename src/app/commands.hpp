@@ -10,11 +10,19 @@ struct RunOptions {
   std::string out_dir;
   int threads = 0;
   std::vector<std::string> overrides;  // --set key=value
+  bool report = true;                  // make figures and report.html at the end
 };
 
 int run_command(const RunOptions& o);
 int check_command(const std::string& case_path, bool json,
                   const std::vector<std::string>& overrides);
+
+// Figures and report.html of a run directory (tools/silodem_report.py). With
+// quiet_if_unavailable, a missing Python/matplotlib is a warning, not an error.
+int report_command(const std::string& dir, bool quiet_if_unavailable = false);
+// Overlay figures of several runs into `out` (tools/silodem_compare.py); labels "A,B,...".
+int compare_command(const std::vector<std::string>& dirs, const std::string& out,
+                    const std::string& labels);
 
 // Exit codes.
 inline constexpr int kExitOk = 0;

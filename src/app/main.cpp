@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1024));
   run_cmd->add_option("--set", run.overrides,
                       "override a case-file value, e.g. --set coarse_graining.k=4 (repeatable)");
+  bool no_report = false;
+  run_cmd->add_flag("--no-report", no_report, "do not make figures and report.html at the end");
 
   std::string check_path;
   bool json = false;
@@ -34,6 +36,25 @@ int main(int argc, char** argv) {
   std::vector<std::string> check_overrides;
   check_cmd->add_option("--set", check_overrides, "override a case-file value (repeatable)");
 
+  std::string report_dir;
+  auto* report_cmd =
+      cli.add_subcommand("report", "make the figures (PNG) and report.html of a run directory");
+  report_cmd->add_option("dir", report_dir, "run directory")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+
+  std::vector<std::string> compare_dirs;
+  std::string compare_out, compare_labels;
+  auto* compare_cmd = cli.add_subcommand(
+      "compare", "overlay the outlet curves (rate, cumulative mass, calorific value) of runs");
+  compare_cmd->add_option("dirs", compare_dirs, "run directories (two or more)")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+  compare_cmd
+      ->add_option("--out", compare_out, "directory for the figures (must not exist or be empty)")
+      ->required();
+  compare_cmd->add_option("--labels", compare_labels, "legend labels, comma separated");
+
   auto* docs_cmd =
       cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
 
@@ -44,7 +65,12 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : app::kExitInput;
   }
   try {
-    if (*run_cmd) return app::run_command(run);
+    if (*run_cmd) {
+      run.report = !no_report;
+      return app::run_command(run);
+    }
+    if (*report_cmd) return app::report_command(report_dir);
+    if (*compare_cmd) return app::compare_command(compare_dirs, compare_out, compare_labels);
     if (*check_cmd) return app::check_command(check_path, json, check_overrides);
     if (*docs_cmd) {
       fmt::print("{}", config::markdown());

@@ -13,6 +13,8 @@
 #include "io/config/load.hpp"
 #include "io/csv.hpp"
 #include "io/report_json.hpp"
+#include "io/vtk.hpp"
+#include "probes/registry.hpp"
 #include "scenario/discharge.hpp"
 #include "scenario/layered_filling.hpp"
 #include "scenario/outlet_stats.hpp"
@@ -153,6 +155,96 @@ void write_outlet_csv(const fs::path& path, const Case& c, const std::vector<Out
   w.finish();
 }
 
+// The probes of the discharge, each streaming its rows into probe_<name>.csv, and the ParaView
+// frames every vtk_interval seconds. Clock: seconds since the valve opened (t0 = fill end).
+class Observers {
+ public:
+  Observers(const Case& c, const fs::path& out, double t0) : c_(c), out_(out), t0_(t0) {
+    for (auto& p : make_probes(c)) {
+      files_.push_back(std::make_unique<CsvWriter>(
+          (out / fmt::format("probe_{}.csv", p->name())).string(), p->columns()));
+      probes_.push_back(std::move(p));
+    }
+    if (c.output.vtk_interval > 0) {
+      fs::create_directories(out / "vtk");
+      write_silo_vtp((out / "silo.vtp").string(), c.silo.geometry);
+      pvd_ = std::make_unique<PvdCollection>((out / "particles.pvd").string());
+    }
+  }
+  void attach(Simulation& sim) {
+    if (!probes_.empty())
+      sim.add_hook(
+          {"probes", Phase::StepEnd, c_.probes.every, [this](Simulation& s) { sample(s); }});
+    if (pvd_)
+      sim.add_hook({"vtk", Phase::StepEnd, 1, [this](Simulation& s) {
+                      if (s.time() - t0_ >= next_frame_ - 0.5 * s.dt()) frame(s);
+                    }});
+  }
+  void sample(const Simulation& sim) {
+    ProbeView view(sim, sim.time() - t0_);
+    std::vector<ProbeRow> rows;
+    for (std::size_t k = 0; k < probes_.size(); ++k) {
+      rows.clear();
+      probes_[k]->sample(view, rows);
+      for (const auto& r : rows) files_[k]->row(r);
+    }
+  }
+  void frame(const Simulation& sim) {
+    const std::string name = fmt::format("vtk/particles_{:06d}.vtp", pvd_->frames());
+    write_particles_vtp((out_ / name).string(), sim, sim.contact_tally());
+    pvd_->add(sim.time() - t0_, name);
+    next_frame_ += c_.output.vtk_interval;
+  }
+  // Final rows (time averages) and the files renamed to their final names.
+  void finish() {
+    std::vector<ProbeRow> rows;
+    for (std::size_t k = 0; k < probes_.size(); ++k) {
+      rows.clear();
+      probes_[k]->finish(rows);
+      for (const auto& r : rows) files_[k]->row(r);
+      files_[k]->finish();
+    }
+  }
+  toml::array files() const {
+    toml::array a;
+    for (const auto& p : probes_) a.push_back(fmt::format("probe_{}.csv", p->name()));
+    return a;
+  }
+  std::size_t frames() const { return pvd_ ? pvd_->frames() : 0; }
+
+ private:
+  const Case& c_;
+  fs::path out_;
+  double t0_;
+  std::vector<std::unique_ptr<Probe>> probes_;
+  std::vector<std::unique_ptr<CsvWriter>> files_;
+  std::unique_ptr<PvdCollection> pvd_;
+  double next_frame_ = 0.0;
+};
+
+// The measured outlet data, copied into the run directory, and its errors against the bins.
+toml::table measured_summary(const Case& c, const fs::path& out,
+                             const std::vector<OutletBin>& bins) {
+  const MeasuredData& m = c.measured;
+  CsvWriter w((out / "measured.csv").string(), {"t_s", "rate_kg_s", "calorific_kcal_kg"});
+  for (std::size_t k = 0; k < m.t.size(); ++k) w.row({m.t[k], m.rate[k], m.calorific[k]});
+  w.finish();
+  const MeasuredErrors e = compare_with_measured(bins, m);
+  toml::table t{{"file", "measured.csv"},
+                {"source", c.output.measured},
+                {"points", int64_t(m.t.size())},
+                {"rate_points", e.rate_points},
+                {"calorific_points", e.calorific_points}};
+  auto put = [&](const char* key, double x) {
+    if (std::isfinite(x)) t.insert(key, x);
+  };
+  put("rate_max_rel_error", e.rate_max);
+  put("rate_mean_rel_error", e.rate_mean);
+  put("calorific_max_rel_error", e.calorific_max);
+  put("calorific_mean_rel_error", e.calorific_mean);
+  return t;
+}
+
 int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, ContactModel model) {
   std::size_t valve = 0;
   auto sim = build_silo_simulation(c, report, std::move(model), &valve, o.threads);
@@ -163,6 +255,7 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
   FillReport fill;
   DischargeResult dis;
   bool filled = false;
+  std::unique_ptr<Observers> observers;
   try {
     fill = fill_silo(*sim, c, report.segment_coal, rng, [&](const std::string& s) {
       progress.show(fmt::format("fill {}  particles {}  wall {:.0f} s", s, sim->particles().size(),
@@ -175,6 +268,9 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
                fill.particles, fill.mass, progress.elapsed(), fill.settle_time);
     for (const auto& w : fill.warnings) fmt::print(stderr, "warning: {}\n", w);
     const double fill_wall = progress.elapsed();
+    observers = std::make_unique<Observers>(c, out, sim->time());
+    observers->attach(*sim);
+    observers->sample(*sim);  // t = 0: the filled silo
     dis = discharge(*sim, c.silo.geometry, valve, c.discharge, [&](const DischargeState& s) {
       const double wall = progress.elapsed() - fill_wall;
       const double frac = s.discharged / std::max(s.filled, 1e-30);
@@ -197,6 +293,7 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
     bins = outlet_bins(dis.outflow, c.discharge.bin, dis.end_time, q);
     write_outlet_csv(out / "outlet.csv", c, bins);
   }
+  if (observers) observers->finish();
   // Mass ledger: filled = in silo + discharged + lost.
   const double ledger_error =
       std::fabs(dis.filled_mass - (dis.remaining_mass + dis.discharged_mass + dis.lost_mass));
@@ -210,10 +307,24 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
                                                      : "time limit";
   toml::array fill_warnings;
   for (const auto& w : fill.warnings) fill_warnings.push_back(w);
+  toml::array coals;
+  for (const auto& coal : c.coals)
+    coals.push_back(toml::table{{"name", coal.name},
+                                {"symbol", c.coal_symbols[std::size_t(&coal - c.coals.data())]},
+                                {"heating_value_kcal_kg", coal.heating_value}});
+  const SiloGeometry& g = c.silo.geometry;
   toml::table summary{
       {"complete", error.empty()},
       {"error", error},
+      {"title", c.title},
       {"case", o.case_path},
+      {"coals", std::move(coals)},
+      {"silo", toml::table{{"outlet_diameter_m", g.outlet_diameter},
+                           {"cone_height_m", g.cone_height},
+                           {"cylinder_diameter_m", g.cylinder_diameter},
+                           {"cylinder_height_m", g.cylinder_height}}},
+      {"probe_files", observers ? observers->files() : toml::array{}},
+      {"vtk_frames", int64_t(observers ? observers->frames() : 0)},
       {"scenario", c.fill.scenario},
       {"filled_mass_kg", dis.filled_mass},
       {"discharged_mass_kg", dis.discharged_mass},
@@ -239,7 +350,9 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
       {"fill_warnings", std::move(fill_warnings)},
       {"wall_time_s", progress.elapsed()},
   };
+  if (filled && !c.measured.t.empty()) summary.insert("measured", measured_summary(c, out, bins));
   write_text(out / "summary.json", to_json(summary));
+  if (filled && o.report) report_command(out.string(), true);
   if (!error.empty()) {
     fmt::print(stderr, "simulation error: {}\n", error);
     return kExitSimulation;

@@ -50,6 +50,10 @@ struct Field {
     required = true;
     return *this;
   }
+  Field& optional() {
+    required = false;
+    return *this;
+  }
   Field& above(double v) {
     min = v, min_exclusive = true;
     return *this;

@@ -215,6 +215,45 @@ const ContactState* Simulation::contact_state(std::uint64_t a, std::uint64_t b,
   return nullptr;
 }
 
+ContactTally Simulation::contact_tally() const {
+  const std::size_t n = p_.size();
+  ContactTally t;
+  t.particle_contacts.assign(n, 0);
+  t.wall_contacts.assign(n, 0);
+  t.cohesion_sum.assign(n, 0.0);
+  t.cohesion_max_pp.assign(n, 0.0);
+  if (!initialized_) return t;
+  for (std::size_t i = 0; i < n; ++i) {
+    const BodyState bi = body(p_, i);
+    for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
+      const std::size_t j = std::size_t(list_.partner[e]);
+      const ContactLaw& law = model_.pair(p_.material[i], p_.material[j]);
+      const double reach = (p_.radius[i] + p_.radius[j]) * (1.0 + law.cp.reach_over_d);
+      if (norm2(p_.x[i] - p_.x[j]) >= reach * reach) continue;
+      ContactState copy = list_.state[e];
+      const ContactResult r = evaluate_contact(law, pair_geometry(bi, body(p_, j)), copy, s_.dt);
+      if (r.touching) ++t.particle_contacts[i], ++t.particle_contacts[j];
+      t.cohesion_sum[i] += r.cohesion;
+      t.cohesion_sum[j] += r.cohesion;
+      t.cohesion_max_pp[i] = std::max(t.cohesion_max_pp[i], r.cohesion);
+      t.cohesion_max_pp[j] = std::max(t.cohesion_max_pp[j], r.cohesion);
+    }
+    const ContactLaw& wl = model_.wall(p_.material[i]);
+    const double reach = p_.radius[i] * (1.0 + 2.0 * wl.cp.reach_over_d);
+    for (int e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e) {
+      const Wall& w = *walls_[list_.wall[e]];
+      WallHit hit;
+      if (!w.near(p_.x[i], reach, hit)) continue;
+      ContactState copy = list_.wall_state[e];
+      const ContactResult r =
+          evaluate_contact(wl, wall_geometry(bi, hit.n, hit.distance, w.velocity()), copy, s_.dt);
+      if (r.touching) ++t.wall_contacts[i];
+      t.cohesion_sum[i] += r.cohesion;
+    }
+  }
+  return t;
+}
+
 EnergyBudget Simulation::energy() const {
   EnergyBudget e;
   const double g = norm(s_.gravity);

@@ -23,6 +23,15 @@ struct SimulationSettings {
   int threads = 0;                // 0 = OpenMP default
 };
 
+// What each particle's contacts do right now, for observers (probes, VTK output). Computed on
+// demand by a read-only pass over the neighbour list (the history is copied, never advanced).
+struct ContactTally {
+  std::vector<int> particle_contacts;   // touching particle partners (overlap > 0)
+  std::vector<int> wall_contacts;       // touching walls
+  std::vector<double> cohesion_sum;     // N, sum of cohesive force magnitudes, particles + walls
+  std::vector<double> cohesion_max_pp;  // N, largest cohesive force from one particle partner
+};
+
 struct EnergyBudget {
   double translational = 0.0, rotational = 0.0, gravitational = 0.0, elastic = 0.0;
   double total() const { return translational + rotational + gravitational + elastic; }
@@ -61,6 +70,8 @@ class Simulation {
 
   // History of the contact between two particles (by stable id), or nullptr.
   const ContactState* contact_state(std::uint64_t id_a, std::uint64_t id_b, bool* flipped) const;
+  // Per-particle contact counts and cohesive forces of the current state (see ContactTally).
+  ContactTally contact_tally() const;
   // Kinetic, rotational, gravitational (relative to z = 0 along -gravity) and spring energy.
   EnergyBudget energy() const;
 

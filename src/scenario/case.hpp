@@ -51,6 +51,29 @@ struct LatticeSpec {
 struct OutputSpec {
   long every = 0;                  // steps between rows of trajectory.csv; 0 = final state only
   std::vector<std::uint64_t> ids;  // particles to write; empty = all
+  double vtk_interval = 0.0;       // s between ParaView frames of a silo run; 0 = none
+  std::string measured;            // measured outlet data (CSV), resolved against the case file
+  SourcePlace measured_place;
+};
+
+// Measured outlet data (optional): times with a mass flow rate and/or a calorific value.
+struct MeasuredData {
+  std::vector<double> t;          // s since the valve opened
+  std::vector<double> rate;       // kg/s (NaN where not measured)
+  std::vector<double> calorific;  // kcal/kg (NaN where not measured)
+  bool has_rate = false, has_calorific = false;
+};
+
+// Probes of a silo run (src/probes), sampled every `every` steps of the discharge.
+struct ProbeSpec {
+  long every = 1000;  // steps; 0 = no probes
+  std::vector<double> slab_times{0.0, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 40.0, 60.0, 80.0};
+  double slab_thickness = 0.02;                        // m
+  std::vector<double> profile_heights{0.1, 0.2, 0.3};  // m above the outlet
+  double profile_bin = 0.01;                           // m
+  double profile_from = 0.0, profile_to = 1e9;         // s, averaging window
+  double adhesion_threshold = 1e-3;                    // N
+  double level_radius = 0.02;                          // m around the axis
 };
 
 enum class FillMode { Mass, Volume };
@@ -91,6 +114,8 @@ struct Case {
   std::vector<ParticleSpec> particles;
   std::vector<LatticeSpec> lattices;
   OutputSpec output;
+  MeasuredData measured;
+  ProbeSpec probes;
   SiloSpec silo;
   FillSpec fill;
   DischargeSpec discharge;

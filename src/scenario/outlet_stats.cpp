@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "scenario/outlet_stats.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -37,6 +38,35 @@ std::vector<OutletBin> outlet_bins(const std::vector<OutletRecord>& out, double 
     o.calorific = mixture_calorific(per[b], q);
   }
   return bins;
+}
+
+}  // namespace silodem
+
+namespace silodem {
+
+MeasuredErrors compare_with_measured(const std::vector<OutletBin>& bins, const MeasuredData& m) {
+  MeasuredErrors e;
+  double rate_sum = 0.0, cal_sum = 0.0;
+  for (std::size_t k = 0; k < m.t.size(); ++k) {
+    const double t = m.t[k];
+    const OutletBin* hit = nullptr;
+    for (const auto& b : bins)
+      if (b.t_start <= t && t < b.t_end) hit = &b;
+    if (!hit) continue;
+    auto add = [](double sim, double meas, int& n, double& sum, double& mx) {
+      if (!std::isfinite(sim) || !std::isfinite(meas) || meas == 0.0) return;
+      const double r = std::fabs(sim - meas) / std::fabs(meas);
+      ++n, sum += r, mx = std::max(mx, r);
+    };
+    add(hit->rate, m.rate[k], e.rate_points, rate_sum, e.rate_max);
+    add(hit->calorific, m.calorific[k], e.calorific_points, cal_sum, e.calorific_max);
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  e.rate_mean = e.rate_points ? rate_sum / e.rate_points : nan;
+  e.calorific_mean = e.calorific_points ? cal_sum / e.calorific_points : nan;
+  if (!e.rate_points) e.rate_max = nan;
+  if (!e.calorific_points) e.calorific_max = nan;
+  return e;
 }
 
 }  // namespace silodem

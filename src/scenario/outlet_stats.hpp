@@ -19,6 +19,16 @@ struct OutletBin {
 std::vector<OutletBin> outlet_bins(const std::vector<OutletRecord>& out, double bin, double t_end,
                                    const std::vector<double>& heating_values);
 
+// Simulated bins against measured outlet data: for each measured point at time t, the bin with
+// t_start <= t < t_end (points outside the bins, or whose bin or measurement is empty or zero,
+// are skipped); relative error |sim - meas| / |meas|.
+struct MeasuredErrors {
+  int rate_points = 0, calorific_points = 0;
+  double rate_max = 0.0, rate_mean = 0.0;            // NaN when no point compared
+  double calorific_max = 0.0, calorific_mean = 0.0;  // NaN when no point compared
+};
+MeasuredErrors compare_with_measured(const std::vector<OutletBin>& bins, const MeasuredData& m);
+
 // Eq. 17 over a mass inventory: sum_c m_c Q_c / sum_c m_c.
 double mixture_calorific(const std::vector<double>& mass_per_coal,
                          const std::vector<double>& heating_values);

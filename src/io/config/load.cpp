@@ -6,11 +6,13 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "engine/walls/wall.hpp"
 #include "io/config/schema.hpp"
+#include "io/measured.hpp"
 #include "model/contact/registry.hpp"
 #include "scenario/layers.hpp"
 
@@ -557,8 +559,24 @@ Case build(const toml::table& root, const std::string& file) {
     if (c.discharge.max_time / c.discharge.bin > 1e7)
       throw d.error("bin", fmt::format("= {:g} s gives more than 1e7 bins over max_time = {:g} s",
                                        c.discharge.bin, c.discharge.max_time));
+    const ParamValues pr = r.read(single("probes"), section("probes").fields, "probes");
+    ProbeSpec& ps = c.probes;
+    ps.every = long(pr.number("every"));
+    if (!pr.lists.at("slab_times").empty()) ps.slab_times = pr.lists.at("slab_times");
+    std::sort(ps.slab_times.begin(), ps.slab_times.end());
+    ps.slab_thickness = pr.number("slab_thickness_mm");
+    if (!pr.lists.at("profile_heights_mm").empty())
+      ps.profile_heights = pr.lists.at("profile_heights_mm");
+    ps.profile_bin = pr.number("profile_bin_mm");
+    ps.profile_from = pr.number("profile_from");
+    ps.profile_to = pr.number("profile_to");
+    if (ps.profile_to <= ps.profile_from)
+      throw pr.error("profile_to", fmt::format("= {:g} s must be after profile_from = {:g} s",
+                                               ps.profile_to, ps.profile_from));
+    ps.adhesion_threshold = pr.number("adhesion_threshold");
+    ps.level_radius = pr.number("level_radius_mm");
   } else {
-    for (const char* s : {"fill", "discharge"})
+    for (const char* s : {"fill", "discharge", "probes"})
       if (const toml::node* n = root.get(s))
         throw InputError(r.place(*n), s, "only a silo case (with [silo]) has this section");
   }
@@ -568,6 +586,18 @@ Case build(const toml::table& root, const std::string& file) {
     const ParamValues v = r.read(single("output"), section("output").fields, "output");
     c.output.every = long(v.number("every"));
     for (double id : v.lists.at("ids")) c.output.ids.push_back(std::uint64_t(id));
+    c.output.vtk_interval = v.number("vtk_interval");
+    if (c.output.vtk_interval > 0 && !c.silo.present)
+      throw v.error("vtk_interval", "ParaView frames are written by silo runs only");
+    if (const std::string& m = v.string("measured"); !m.empty()) {
+      if (!c.silo.present) throw v.error("measured", "measured outlet data needs a silo case");
+      const std::filesystem::path base = std::filesystem::path(file).parent_path();
+      const std::filesystem::path mp =
+          std::filesystem::path(m).is_absolute() ? std::filesystem::path(m) : base / m;
+      c.output.measured = mp.string();
+      c.output.measured_place = v.places.at("measured");
+      c.measured = load_measured_csv(c.output.measured, c.output.measured_place);
+    }
   }
   return c;
 }

@@ -230,6 +230,74 @@ const std::vector<Section>& sections() {
                .at_least(0)
                .at_most(1e12),
            F::integer_list("ids", "particle ids to write; default all"),
+           F::number("vtk_interval",
+                     "simulated time between ParaView frames (particles_*.vtp "
+                     "and particles.pvd) of a silo discharge; 0 = none (large for long runs)",
+                     "s")
+               .with_default(0)
+               .at_least(0)
+               .at_most(1e4),
+           F::text("measured",
+                   "CSV of measured outlet data (columns t_s and rate_kg_s and/or "
+                   "calorific_kcal_kg), relative to the case file; drawn with the simulated "
+                   "curves, errors in summary.json",
+                   {})
+               .optional(),
+       }},
+      {"probes",
+       "observers of a silo discharge, each writing probe_<name>.csv into the run directory",
+       false,
+       {
+           F::integer("every", "steps between samples; 0 = no probes")
+               .with_default(1000)
+               .at_least(0)
+               .at_most(1e9),
+           F::number_list("slab_times",
+                          "times of the flow-pattern snapshots (default 0, 0.25, "
+                          "0.5, 1, 2, 5, 10, 20, 40, 60, 80)",
+                          "s")
+               .at_least(0)
+               .at_most(1e6),
+           F::number("slab_thickness_mm",
+                     "thickness of the vertical slab through the axis (the "
+                     "snapshots and the velocity profiles)",
+                     "mm", units::mm)
+               .with_default(20)
+               .above(0)
+               .at_most(1e4),
+           F::number_list("profile_heights_mm",
+                          "heights above the outlet of the velocity "
+                          "profiles (default 100, 200, 300)",
+                          "mm", units::mm)
+               .at_least(0)
+               .at_most(1e5),
+           F::number("profile_bin_mm", "width of the profile bins (and their height)", "mm",
+                     units::mm)
+               .with_default(10)
+               .above(0)
+               .at_most(1e4),
+           F::number("profile_from", "start of the profiles' averaging window", "s")
+               .with_default(0)
+               .at_least(0)
+               .at_most(1e6),
+           F::number("profile_to", "end of the profiles' averaging window (default: the end)", "s")
+               .with_default(1e9)
+               .above(0)
+               .at_most(1e9),
+           F::number("adhesion_threshold",
+                     "a particle is adhered when a partner's cohesive force "
+                     "on it exceeds this",
+                     "N")
+               .with_default(1e-3)
+               .at_least(0)
+               .at_most(1e6),
+           F::number("level_radius_mm",
+                     "particles within this distance of the axis define the "
+                     "material level",
+                     "mm", units::mm)
+               .with_default(20)
+               .above(0)
+               .at_most(1e4),
        }},
   };
   return s;
@@ -242,8 +310,9 @@ const Section& section(const std::string& name) {
 }
 
 std::vector<std::string> top_level_keys() {
-  return {"title",    "simulation", "coarse_graining", "coal", "contact", "wall",
-          "particle", "lattice",    "output",          "silo", "fill",    "discharge"};
+  return {"title", "simulation", "coarse_graining", "coal",   "contact",
+          "wall",  "particle",   "lattice",         "output", "silo",
+          "fill",  "discharge",  "probes"};
 }
 
 static std::size_t edit_distance(const std::string& a, const std::string& b) {

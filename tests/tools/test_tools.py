@@ -1,0 +1,388 @@
+#!/usr/bin/python3
+"""Tests of tools/silodem_report.py and tools/silodem_compare.py.
+
+Run: /usr/bin/python3 tests/tools/test_tools.py
+Builds synthetic run directories (known data) in a temporary directory, runs
+both scripts as subprocesses and checks their PNGs, HTML, axis labels (every
+label names a unit), exit codes, and the measured-data relative errors.
+Writes only inside the temporary directory.
+"""
+
+import csv
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+TOOLS = os.path.normpath(os.path.join(HERE, "..", "..", "tools"))
+REPORT = os.path.join(TOOLS, "silodem_report.py")
+COMPARE = os.path.join(TOOLS, "silodem_compare.py")
+PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
+sys.path.insert(0, TOOLS)
+
+import silodem_plots as sp  # noqa: E402
+
+PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
+REPORT_FIGURES = ["rate_cumulative.png", "calorific.png", "fractions.png", "snapshots_coal.png",
+                  "snapshots_velocity.png", "velocity_profiles.png", "adhesion.png",
+                  "cohesion_force.png", "level.png", "coordination.png"]
+PROBE_FILES = ["probe_slab.csv", "probe_velocity_profile.csv", "probe_adhesion.csv",
+               "probe_cohesion_force.csv", "probe_level.csv", "probe_coordination.csv"]
+COMPARE_FIGURES = ["compare_rate.png", "compare_cumulative.png", "compare_calorific.png"]
+# Independent of the tool's own check: a non-empty text in (...) or [...].
+UNIT = re.compile(r"\(\s*[^()\s][^()]*\)|\[\s*[^\[\]\s][^\[\]]*\]")
+
+COALS = [("Longwanggou", 4788.0), ("Indonesian", 3900.0)]
+SILO = {"outlet_diameter_m": 0.06, "cone_height_m": 0.19, "cylinder_diameter_m": 0.3,
+        "cylinder_height_m": 0.45}
+BIN = 1.0  # s, outlet bin width
+RATES = [0.40, 0.42, 0.38, 0.36, 0.30, 0.20, 0.0, 0.10]  # kg/s per bin; bin 6 is empty
+
+
+# ---- synthetic run directory ----------------------------------------------------------------
+
+
+def write_csv(path, header, rows):
+    """A CSV file; None cells are written empty."""
+    with open(path, "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(header)
+        for row in rows:
+            w.writerow(["" if c is None else c for c in row])
+
+
+def summary(title, scenario, **extra):
+    """A summary.json dict with known numbers."""
+    out = {
+        "title": title, "scenario": scenario, "complete": True, "error": "",
+        "filled_mass_kg": 31.38, "discharged_mass_kg": 2.16, "remaining_mass_kg": 29.21,
+        "lost_mass_kg": 0.01, "discharge_time_s": 8.0, "mean_rate_kg_s": 0.27,
+        "flow_stopped": False, "end": "emptied", "particles_filled": 26787, "k": 4.0,
+        "time_step_s": 1.87e-05, "wall_time_s": 731.9, "threads": 2,
+        "outlet_mean_calorific_kcal_kg": 4422.0, "inventory_calorific_kcal_kg": 4632.0,
+        "fill_warnings": ["segment H5 <settled> late & slow"],
+        "coals": [{"name": n, "symbol": n[0], "heating_value_kcal_kg": q} for n, q in COALS],
+        "silo": SILO,
+    }
+    out.update(extra)
+    return out
+
+
+def outlet_rows(scale=1.0):
+    """outlet.csv rows: RATES (x scale) per bin; composition shifts from coal 0 to coal 1."""
+    rows, cumulative = [], 0.0
+    for i, rate in enumerate(RATES):
+        mass = rate * scale * BIN
+        cumulative += mass
+        if mass > 0:
+            f1 = min(1.0, i / (len(RATES) - 1))
+            fr = [1.0 - f1, f1]
+            cal = fr[0] * COALS[0][1] + fr[1] * COALS[1][1]
+        else:
+            fr, cal = [None, None], None
+        rows.append([i * BIN, (i + 1) * BIN, mass, mass / BIN, cumulative] + fr + [cal])
+    return rows
+
+
+def slab_rows():
+    """Particles in an axial slab at 10 snapshot times (the report shows 8)."""
+    rows, pid = [], 0
+    r = 0.006
+    for k in range(10):
+        t = float(k)
+        top = 0.6 - 0.05 * k
+        for z in [0.004 + 2 * r * j for j in range(int(top / (2 * r)))]:
+            half = 0.03 + z * (0.15 - 0.03) / 0.19 if z < 0.19 else 0.15
+            x = -half + r
+            while x < half - r:
+                coal = 0 if z > 0.25 else 1
+                vz = -0.5 * (1 - (x / half) ** 2) * (1.5 if z < 0.19 else 1.0)
+                rows.append([t, pid, coal, round(x, 5), 0.0, round(z, 5), 0.0, 0.0,
+                             round(vz, 5), r])
+                pid += 1
+                x += 2 * r
+    return rows
+
+
+def profile_rows():
+    """Velocity profiles at three heights; outer bins of the lowest height are empty."""
+    rows = []
+    for h in (0.1, 0.3, 0.5):
+        half = 0.03 + h * 0.12 / 0.19 if h < 0.19 else 0.15
+        for j in range(15):
+            x = -0.14 + 0.02 * j
+            if abs(x) > half:
+                rows.append([h, x, None, None, 0, 2.0, 6.0])
+            else:
+                rows.append([h, x, -0.3 * (1 - (x / half) ** 2), 0.02, 40, 2.0, 6.0])
+    return rows
+
+
+def make_run(path, title="Paper case", scenario="L3-I2", probes=True, measured=True,
+             scale=1.0, **extra):
+    """A complete synthetic run directory."""
+    os.makedirs(path)
+    s = summary(title, scenario, **extra)
+    if measured:
+        s["measured"] = {"file": "measured.csv", "points": 5, "rate_max_rel_error": 0.25,
+                         "rate_mean_rel_error": 0.1234, "calorific_max_rel_error": None}
+    with open(os.path.join(path, "summary.json"), "w") as f:
+        json.dump(s, f)
+    write_csv(os.path.join(path, "fill.csv"),
+              ["segment", "coal", "z_low_m", "z_high_m", "z_low_settled_m", "z_high_settled_m",
+               "particles", "mass_kg", "target_mass_kg", "bulk_density_kg_m3",
+               "measured_bulk_density_kg_m3", "solid_fraction", "settle_time_s", "settled"],
+              [["H1", "Indonesian", 0, 0.1266, 0, 0.1247, 469, 0.653, 0.6522, 751.6, 728, 0.5927,
+                0.115, "true"],
+               ["H2", "Longwanggou", 0.1266, 0.2532, 0.1247, 0.2503, 1630, 2.2695, 2.2691, 746.9,
+                778, 0.589, 0.1606, "false"]])
+    header = ["t_start_s", "t_end_s", "mass_kg", "rate_kg_s", "cumulative_kg"]
+    header += ["fraction_" + n for n, _ in COALS] + ["calorific_kcal_kg"]
+    write_csv(os.path.join(path, "outlet.csv"), header, outlet_rows(scale))
+    if measured:
+        write_csv(os.path.join(path, "measured.csv"), ["t_s", "rate_kg_s", "calorific_kcal_kg"],
+                  MEASURED)
+    if probes:
+        write_probes(path)
+    return path
+
+
+def write_probes(path):
+    """All probe_*.csv files."""
+    write_csv(os.path.join(path, "probe_slab.csv"),
+              ["t_s", "id", "coal", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s",
+               "radius_m"], slab_rows())
+    write_csv(os.path.join(path, "probe_velocity_profile.csv"),
+              ["height_m", "x_m", "vz_mean_m_s", "vz_std_m_s", "samples", "t_from_s", "t_to_s"],
+              profile_rows())
+    ts = [0.25 * i for i in range(33)]
+    write_csv(os.path.join(path, "probe_adhesion.csv"),
+              ["t_s", "particles", "adhered", "adhered_share"],
+              [[t, 1000, int(50 + 5 * t), (50 + 5 * t) / 1000] for t in ts])
+    write_csv(os.path.join(path, "probe_cohesion_force.csv"),
+              ["t_s", "particles", "mean_cohesive_force_n", "max_cohesive_force_n"],
+              [[t, 1000, 0.01 * (1 + 0.1 * t), 0.6 + 0.05 * t] for t in ts])
+    write_csv(os.path.join(path, "probe_level.csv"), ["t_s", "level_m"],
+              [[t, None if t > 7.5 else 0.6 - 0.07 * t] for t in ts])
+    write_csv(os.path.join(path, "probe_coordination.csv"),
+              ["t_s", "particles", "mean_coordination"],
+              [[t, 1000, 4.5 - 0.1 * t] for t in ts])
+
+
+# Measured points against RATES (bins of 1 s) and the calorific values of outlet_rows():
+#   t = 0.5: rate 0.40 vs 0.50 -> 0.2;   t = 1.0: 0.42 vs 0.35 -> 0.2 (bin [1, 2))
+#   t = 2.9: 0.38 vs 0.38 -> 0;          t = 6.5: the bin is empty, and meas 0 -> skipped
+#   t = 20: outside the simulated range -> skipped
+# rate: max 0.2, mean 0.4 / 3.  calorific at t = 0.5 (4788): 4788 * 1.25 -> |4788 - 5985| / 5985
+MEASURED = [[0.5, 0.50, 4788 * 1.25], [1.0, 0.35, None], [2.9, 0.38, None], [6.5, 0.0, 4000],
+            [20.0, 0.3, 4000]]
+EXPECTED_RATE = {"max": 0.2, "mean": 0.4 / 3, "points": 3}
+EXPECTED_CALORIFIC = {"max": 0.2, "mean": 0.2, "points": 1}
+
+
+# ---- helpers --------------------------------------------------------------------------------
+
+
+def run_tool(*args):
+    """Run a tool script from an unrelated cwd; returns the CompletedProcess."""
+    return subprocess.run([PYTHON] + list(args), capture_output=True, text=True, cwd="/")
+
+
+def read(path):
+    """The text of a file."""
+    with open(path, encoding="utf-8") as f:
+        return f.read()
+
+
+def label_records(stdout):
+    """The LABELS records printed by --check-labels."""
+    return [json.loads(line[len("LABELS "):]) for line in stdout.splitlines()
+            if line.startswith("LABELS ")]
+
+
+class ToolTestCase(unittest.TestCase):
+    """Common checks."""
+
+    def setUp(self):
+        self._tmp = tempfile.TemporaryDirectory(prefix="silodem_tools_")
+        self.tmp = self._tmp.name
+
+    def tearDown(self):
+        self._tmp.cleanup()
+
+    def assertPng(self, path):
+        self.assertTrue(os.path.isfile(path), path)
+        with open(path, "rb") as f:
+            self.assertEqual(f.read(8), PNG_SIGNATURE, path)
+        self.assertGreater(os.path.getsize(path), 5000, path)
+
+    def assertLabelsHaveUnits(self, records, figures):
+        self.assertTrue(records)
+        self.assertEqual({r["figure"] for r in records}, set(figures))
+        for r in records:
+            where = "{} [{}]".format(r["figure"], r["axes"])
+            if r["axes"].startswith("colorbar"):
+                self.assertIsNone(r["xlabel"], where)
+            else:
+                self.assertRegex(r["xlabel"] or "", UNIT, where + " x label")
+            self.assertRegex(r["ylabel"] or "", UNIT, where + " y label")
+
+
+# ---- report ---------------------------------------------------------------------------------
+
+
+class ReportTest(ToolTestCase):
+
+    def test_full_run(self):
+        run = make_run(os.path.join(self.tmp, "run"))
+        p = run_tool(REPORT, "--check-labels", run)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        html_text = read(os.path.join(run, "report.html"))
+        for name in REPORT_FIGURES:
+            path = os.path.join(run, "figures", name)
+            self.assertPng(path)
+            self.assertIn('src="figures/{}"'.format(name), html_text)
+            self.assertIn(path, p.stdout)
+        self.assertIn(os.path.join(run, "report.html"), p.stdout)
+        for number in ("31.38", "2.16", "29.21", "0.01", "8 s", "0.27 kg/s", "1.87e-05",
+                       "731.9", "4632", "4422", "26787", "751.6", "H2", "Longwanggou"):
+            self.assertIn(number, html_text)
+        self.assertIn("segment H5 &lt;settled&gt; late &amp; slow", html_text)  # escaped
+        self.assertIn("25 %", html_text)      # rate_max_rel_error from summary.json
+        self.assertIn("12.3 %", html_text)    # rate_mean_rel_error
+        self.assertIn("20 %", html_text)      # recomputed by the tool
+        self.assertNotIn("<script", html_text.lower())
+        self.assertNotIn("http", html_text)
+        self.assertLabelsHaveUnits(label_records(p.stdout), REPORT_FIGURES)
+
+    def test_missing_probes_are_reported(self):
+        run = make_run(os.path.join(self.tmp, "run"), probes=False, measured=False)
+        p = run_tool(REPORT, run)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        html_text = read(os.path.join(run, "report.html"))
+        for name in REPORT_FIGURES[:3]:
+            self.assertPng(os.path.join(run, "figures", name))
+        for name in REPORT_FIGURES[3:]:
+            self.assertFalse(os.path.exists(os.path.join(run, "figures", name)), name)
+            self.assertRegex(html_text, re.escape(name) + r": not recorded")
+        for probe in PROBE_FILES:
+            self.assertIn(probe, html_text)
+
+    def test_flow_stopped_and_incomplete_are_prominent(self):
+        run = make_run(os.path.join(self.tmp, "run"), probes=False, flow_stopped=True,
+                       complete=False, error="NaN <velocity>", end="flow stopped",
+                       outlet_mean_calorific_kcal_kg="NaN")
+        p = run_tool(REPORT, run)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        html_text = read(os.path.join(run, "report.html"))
+        self.assertIn('class="alert">Flow stopped', html_text)
+        self.assertIn('class="alert">Run incomplete: NaN &lt;velocity&gt;', html_text)
+
+    def test_missing_summary_is_an_error(self):
+        empty = os.path.join(self.tmp, "empty")
+        os.makedirs(empty)
+        for target in (empty, os.path.join(self.tmp, "nonexistent")):
+            p = run_tool(REPORT, target)
+            self.assertEqual(p.returncode, 2)
+            self.assertEqual(len(p.stderr.strip().splitlines()), 1, p.stderr)
+
+
+# ---- compare --------------------------------------------------------------------------------
+
+
+class CompareTest(ToolTestCase):
+
+    def runs(self, n=3):
+        return [make_run(os.path.join(self.tmp, "r{}".format(i)), title="Case", scenario="L3-I2",
+                         scale=1.0 + 0.2 * i, probes=False, measured=(i == 0))
+                for i in range(n)]
+
+    def test_compare(self):
+        runs = self.runs()
+        out = os.path.join(self.tmp, "cmp")
+        p = run_tool(COMPARE, "--check-labels", "--out", out, *runs)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        html_text = read(os.path.join(out, "compare.html"))
+        for name in COMPARE_FIGURES:
+            self.assertPng(os.path.join(out, name))
+            self.assertIn('src="{}"'.format(name), html_text)
+        # identical default labels get the directory name appended
+        for i in range(3):
+            self.assertIn("Case, L3-I2 (r{})".format(i), html_text)
+        for number in ("31.38", "2.16", "8", "0.27"):
+            self.assertIn(number, html_text)
+        self.assertLabelsHaveUnits(label_records(p.stdout), COMPARE_FIGURES)
+
+    def test_labels_option(self):
+        runs = self.runs(2)
+        out = os.path.join(self.tmp, "cmp")
+        p = run_tool(COMPARE, "--out", out, "--labels", "wet,dry", *runs)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        html_text = read(os.path.join(out, "compare.html"))
+        self.assertIn("<td>wet</td>", html_text)
+        self.assertIn("<td>dry</td>", html_text)
+
+    def test_refusals(self):
+        runs = self.runs(2)
+        out = os.path.join(self.tmp, "cmp")
+        p = run_tool(COMPARE, "--out", out, runs[0])
+        self.assertEqual(p.returncode, 2)
+        self.assertFalse(os.path.exists(out))
+        os.makedirs(out)
+        open(os.path.join(out, "keep.txt"), "w").close()
+        p = run_tool(COMPARE, "--out", out, *runs)
+        self.assertEqual(p.returncode, 2)
+        self.assertEqual(os.listdir(out), ["keep.txt"])
+        p = run_tool(COMPARE, "--out", os.path.join(self.tmp, "c2"), runs[0],
+                     os.path.join(self.tmp, "nonexistent"))
+        self.assertEqual(p.returncode, 2)
+
+
+# ---- in-process checks ----------------------------------------------------------------------
+
+
+class UnitTest(unittest.TestCase):
+
+    def test_relative_errors(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            run = sp.Run(make_run(os.path.join(tmp, "run"), probes=False))
+            errors = sp.measured_errors(run)
+        for key, expected in (("rate", EXPECTED_RATE), ("calorific", EXPECTED_CALORIFIC)):
+            self.assertEqual(errors[key]["points"], expected["points"], key)
+            self.assertTrue(math.isclose(errors[key]["max"], expected["max"], rel_tol=1e-9), key)
+            self.assertTrue(math.isclose(errors[key]["mean"], expected["mean"], rel_tol=1e-9),
+                            key)
+
+    def test_empty_measured_column_counts_as_not_measured(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = make_run(os.path.join(tmp, "run"), probes=False)
+            write_csv(os.path.join(path, "measured.csv"), ["t_s", "rate_kg_s", "calorific_kcal_kg"],
+                      [[0.5, 0.5, None], [1.5, 0.42, None]])
+            run = sp.Run(path)
+            self.assertIsNone(run.measured()["calorific"])
+            errors = sp.measured_errors(run)
+        self.assertIsNone(errors["calorific"])
+        self.assertTrue(math.isclose(errors["rate"]["max"], 0.2, rel_tol=1e-9))
+
+    def test_label_check_catches_a_missing_unit(self):
+        fig, ax = sp.new_figure()
+        ax.set_xlabel("time since valve opening (s)")
+        ax.set_ylabel("mass flow rate")
+        twin = ax.twinx()
+        twin.set_ylabel("discharged mass (kg)")
+        records = sp.axes_labels(fig, "bad.png")
+        problems = sp.label_problems(records)
+        self.assertEqual(len(problems), 1, problems)
+        self.assertIn("mass flow rate", problems[0])
+        self.assertEqual(records[1][2], "time since valve opening (s)")  # twin shares x
+        self.assertFalse(sp.has_unit("speed ()"))
+        self.assertTrue(sp.has_unit("share [%]"))
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)
