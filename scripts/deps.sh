@@ -8,9 +8,11 @@
 #   libbenchmark-dev        benchmarks (Google Benchmark)
 #   clang-format            format check in CI
 #   python3                 end-to-end test scripts (stdlib only)
+#   python3-matplotlib      figures and report.html of a run (tools/*.py; Debian's /usr/bin/python3)
+#   python3-vtk9            tests read the ParaView files back with the real VTK library
 set -euo pipefail
 pkgs=(g++ cmake make libtomlplusplus-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
-      clang-format python3)
+      clang-format python3 python3-matplotlib python3-vtk9)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

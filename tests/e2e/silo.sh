@@ -10,10 +10,24 @@ fail=0
 bad() { printf 'FAIL: %s\n' "$*"; fail=1; }
 case=$src/tests/data/small_silo.toml
 
-"$bin" run "$case" --out "$work/run" > "$work/out.txt" 2> "$work/err.txt" || bad "run exited $?: $(tail -3 "$work/err.txt")"
-for f in outlet.csv fill.csv summary.json case.toml check.json; do
+# Measured outlet data (issue 4): one rate and one calorific value, drawn and compared.
+printf 't_s,rate_kg_s,calorific_kcal_kg\n0.05,0.5,\n0.15,,3500\n' > "$work/measured.csv"
+"$bin" run "$case" --out "$work/run" --set output.vtk_interval=0.05 --set probes.every=100 \
+  --set "output.measured=\"$work/measured.csv\"" > "$work/out.txt" 2> "$work/err.txt" || bad "run exited $?: $(tail -3 "$work/err.txt")"
+for f in outlet.csv fill.csv summary.json case.toml check.json report.html measured.csv \
+         particles.pvd silo.vtp vtk/particles_000000.vtp; do
   [ -f "$work/run/$f" ] || bad "missing $f"
 done
+# Probes and figures of every run (issue 4).
+for p in slab velocity_profile adhesion cohesion_force level coordination; do
+  [ -s "$work/run/probe_$p.csv" ] || bad "missing probe_$p.csv"
+done
+for f in rate_cumulative calorific fractions snapshots_coal snapshots_velocity velocity_profiles \
+         adhesion cohesion_force level coordination; do
+  [ -s "$work/run/figures/$f.png" ] || bad "missing figures/$f.png"
+  grep -q "figures/$f.png" "$work/run/report.html" || bad "report.html does not show $f.png"
+done
+ls "$work/run"/*.partial "$work/run"/vtk/*.partial > /dev/null 2>&1 && bad "a .partial file was left behind"
 python3 - "$work/run" <<'PY' || fail=1
 import csv, json, sys, os
 d = sys.argv[1]
@@ -39,8 +53,38 @@ for r in rows:
 fill = list(csv.DictReader(open(os.path.join(d, "fill.csv"))))
 assert [r["coal"] for r in fill] == ["Indonesian", "Longwanggou"], fill
 assert [r["segment"] for r in fill] == ["H1", "H2"], fill
+# The measured data's errors, recomputed here from outlet.csv (same rule: the bin holding t).
+m = s["measured"]
+assert m["points"] == 2 and m["rate_points"] == 1 and m["calorific_points"] == 1, m
+def bin_at(t):
+    return next(r for r in rows if float(r["t_start_s"]) <= t < float(r["t_end_s"]))
+err_rate = abs(float(bin_at(0.05)["rate_kg_s"]) - 0.5) / 0.5
+err_cal = abs(float(bin_at(0.15)["calorific_kcal_kg"]) - 3500) / 3500
+assert abs(m["rate_max_rel_error"] - err_rate) < 1e-12, (m, err_rate)
+assert abs(m["calorific_mean_rel_error"] - err_cal) < 1e-12, (m, err_cal)
+# Probes: the level falls as the silo empties; the flow-pattern snapshot at t = 0 exists.
+lv = [r for r in csv.DictReader(open(os.path.join(d, "probe_level.csv"))) if r["level_m"]]
+assert float(lv[0]["t_s"]) == 0 and float(lv[-1]["level_m"]) < float(lv[0]["level_m"]), lv[-1]
+slab = list(csv.DictReader(open(os.path.join(d, "probe_slab.csv"))))
+assert any(float(r["t_s"]) == 0 for r in slab)
+assert s["vtk_frames"] >= 2, s["vtk_frames"]
 print("silo e2e ok:", s["discharged_mass_kg"], "kg in", s["discharge_time_s"], "s")
 PY
+
+# A dry run of the same case, then `compare` overlays both (issue 4, Fig. 7 style).
+"$bin" run "$case" --out "$work/dry" --set contact.particle_particle.cohesion.law=none \
+  --set contact.particle_wall.cohesion.law=none > /dev/null 2> "$work/dry.err" || bad "dry run exited $?: $(tail -3 "$work/dry.err")"
+"$bin" compare "$work/run" "$work/dry" --out "$work/cmp" --labels "cohesive,dry" > /dev/null 2> "$work/cmp.err" || bad "compare exited $?: $(cat "$work/cmp.err")"
+for f in compare_rate.png compare_cumulative.png compare_calorific.png compare.html; do
+  [ -s "$work/cmp/$f" ] || bad "compare: missing $f"
+done
+grep -q "dry" "$work/cmp/compare.html" || bad "compare.html lacks the labels"
+"$bin" compare "$work/run" --out "$work/cmp1" > /dev/null 2>&1
+[ $? -eq 2 ] || bad "compare with one run: expected exit 2"
+# `report` remakes the figures of an existing run.
+rm -rf "$work/dry/figures" "$work/dry/report.html"
+"$bin" report "$work/dry" > /dev/null || bad "report exited $?"
+[ -s "$work/dry/report.html" ] && [ -s "$work/dry/figures/rate_cumulative.png" ] || bad "report did not remake the figures"
 
 # --set reaches the case, and a malformed scenario is an input error before any output.
 "$bin" check "$case" --set fill.scenario=I2 | grep -q "H2  Indonesian" || bad "--set fill.scenario not applied"
