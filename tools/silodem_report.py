@@ -312,15 +312,15 @@ def fig_cohesion_force(run):
     t, (mean, peak) = time_series(run, "probe_cohesion_force.csv",
                                   ["mean_cohesive_force_n", "max_cohesive_force_n"])
     fig, ax = sp.new_figure()
-    ax.plot(t, mean, color="C0", label="mean")
-    ax.plot(t, peak, color="C3", lw=1, label="maximum")
+    ax.plot(t, mean, color="C0", label="mean over the particles in the hopper")
+    ax.plot(t, peak, color="C3", lw=1, label="largest")
     positive = np.concatenate([mean, peak])
     positive = positive[np.isfinite(positive) & (positive > 0)]
     if positive.size and positive.max() > 30 * positive.min():
         ax.set_yscale("log")
     ax.set_xlabel(sp.TIME_LABEL)
-    ax.set_ylabel("cohesive contact force (N)")
-    sp.set_title(ax, run.case, "cohesive contact force")
+    ax.set_ylabel("cohesive force on a particle (N)")
+    sp.set_title(ax, run.case, "cohesive force per particle (sum over its contacts)")
     sp.legend_below(fig, *ax.get_legend_handles_labels(), ncol=2)
     return fig
 
@@ -365,7 +365,7 @@ FIGURES = [
     ("velocity_profiles.png", fig_velocity_profiles,
      "Time-averaged vertical velocity across the silo at several heights."),
     ("adhesion.png", fig_adhesion, "Share of particles in the hopper held by a partner particle's cohesive force above the threshold."),
-    ("cohesion_force.png", fig_cohesion_force, "Mean and maximum cohesive contact force."),
+    ("cohesion_force.png", fig_cohesion_force, "Cohesive force on a particle (sum of the cohesive forces of its contacts with particles and walls): mean over the particles in the hopper, and the largest."),
     ("level.png", fig_level, "Height of the top of the bed on the silo axis."),
     ("coordination.png", fig_coordination, "Mean number of contacts per particle."),
 ]

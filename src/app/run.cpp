@@ -352,9 +352,9 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
   };
   if (filled && !c.measured.t.empty()) summary.insert("measured", measured_summary(c, out, bins));
   write_text(out / "summary.json", to_json(summary));
-  if (filled && o.report) report_command(out.string(), true);
   if (!error.empty()) {
     fmt::print(stderr, "simulation error: {}\n", error);
+    if (filled && o.report) report_command(out.string(), true);
     return kExitSimulation;
   }
   fmt::print(
@@ -363,6 +363,7 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
       end, dis.discharged_mass, dis.filled_mass, dis.discharge_time,
       dis.discharge_time > 0 ? dis.discharged_mass / dis.discharge_time : 0.0, dis.remaining_mass,
       dis.lost_mass, out.string());
+  if (o.report) report_command(out.string(), true);
   // A stopped flow is a result, not a success: the silo did not empty.
   return dis.end == DischargeEnd::Emptied ? kExitOk : kExitNotEmptied;
 }

@@ -71,6 +71,11 @@ assert s["vtk_frames"] >= 2, s["vtk_frames"]
 print("silo e2e ok:", s["discharged_mass_kg"], "kg in", s["discharge_time_s"], "s")
 PY
 
+# Probes and ParaView frames only observe: the same run without them gives the same outlet.csv.
+"$bin" run "$case" --out "$work/plain" --no-report --set probes.every=0 > /dev/null 2>&1 || bad "plain run exited $?"
+cmp -s "$work/run/outlet.csv" "$work/plain/outlet.csv" || bad "probes changed outlet.csv"
+[ ! -e "$work/plain/report.html" ] && [ ! -e "$work/plain/probe_level.csv" ] || bad "--no-report / probes.every = 0 not honoured"
+
 # A dry run of the same case, then `compare` overlays both (issue 4, Fig. 7 style).
 "$bin" run "$case" --out "$work/dry" --set contact.particle_particle.cohesion.law=none \
   --set contact.particle_wall.cohesion.law=none > /dev/null 2> "$work/dry.err" || bad "dry run exited $?: $(tail -3 "$work/dry.err")"
