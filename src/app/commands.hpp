@@ -11,6 +11,8 @@ struct RunOptions {
   int threads = 0;
   std::vector<std::string> overrides;  // --set key=value
   bool report = true;                  // make figures and report.html at the end
+  std::string resume_dir;              // --resume DIR: continue from DIR/checkpoint.bin
+  bool force = false;                  // resume although DIR/case.toml changed
 };
 
 int run_command(const RunOptions& o);
@@ -26,8 +28,9 @@ int compare_command(const std::vector<std::string>& dirs, const std::string& out
 
 // Exit codes.
 inline constexpr int kExitOk = 0;
-inline constexpr int kExitInput = 2;       // bad case file or command line
-inline constexpr int kExitSimulation = 3;  // the simulation went wrong
-inline constexpr int kExitNotEmptied = 4;  // silo: the flow stopped (arching) or hit max_time
+inline constexpr int kExitInput = 2;          // bad case file or command line
+inline constexpr int kExitSimulation = 3;     // the simulation went wrong
+inline constexpr int kExitNotEmptied = 4;     // silo: the flow stopped (arching) or hit max_time
+inline constexpr int kExitInterrupted = 130;  // SIGINT/SIGTERM: checkpoint written, resumable
 
 }  // namespace silodem::app

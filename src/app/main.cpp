@@ -14,11 +14,19 @@ int main(int argc, char** argv) {
 
   app::RunOptions run;
   auto* run_cmd = cli.add_subcommand("run", "run a case and write its results into a directory");
-  run_cmd->add_option("case", run.case_path, "case file (TOML)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  run_cmd->add_option("--out", run.out_dir, "output directory (must not exist or be empty)")
-      ->required();
+  auto* case_opt =
+      run_cmd->add_option("case", run.case_path, "case file (TOML)")->check(CLI::ExistingFile);
+  auto* out_opt =
+      run_cmd->add_option("--out", run.out_dir, "output directory (must not exist or be empty)");
+  auto* resume_opt = run_cmd
+                         ->add_option("--resume", run.resume_dir,
+                                      "continue the interrupted silo run in this directory from "
+                                      "its checkpoint (uses the case file in it)")
+                         ->check(CLI::ExistingDirectory);
+  run_cmd->add_flag("--force", run.force, "with --resume: resume although the case file changed");
+  resume_opt->excludes(case_opt)->excludes(out_opt);
+  case_opt->needs(out_opt);
+  out_opt->needs(case_opt);
   run_cmd->add_option("--threads", run.threads, "OpenMP threads (default: case file, else all)")
       ->check(CLI::Range(1, 1024));
   run_cmd->add_option("--set", run.overrides,
@@ -66,6 +74,11 @@ int main(int argc, char** argv) {
   }
   try {
     if (*run_cmd) {
+      if (run.resume_dir.empty() && run.case_path.empty())
+        throw InputError({}, "run", "give a case file and --out DIR, or --resume DIR");
+      if (!run.overrides.empty() && !run.resume_dir.empty())
+        throw InputError({}, "--set",
+                         "a resumed run uses the case in its directory; --set is refused");
       run.report = !no_report;
       return app::run_command(run);
     }

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 #include <unistd.h>
+#include <cstdio>
 
 namespace silodem::app {
 
@@ -16,6 +17,7 @@ double ProgressLine::elapsed() const {
 void ProgressLine::show(const std::string& text, bool force) {
   const auto now = std::chrono::steady_clock::now();
   if (!force && now - last_ < std::chrono::milliseconds(tty_ ? 500 : 5000)) return;
+  std::fflush(stdout);  // results (stdout) and progress (stderr) stay in order in a log
   last_ = now;
   if (tty_) {
     fmt::print(stderr, "\r\033[K{}", text);

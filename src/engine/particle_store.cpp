@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "engine/particle_store.hpp"
 
+#include <stdexcept>
+
 namespace silodem {
 
 std::uint64_t ParticleStore::add(const Vec3& pos, const Vec3& vel, const Vec3& spin, double r,
@@ -36,6 +38,25 @@ long ParticleStore::index_of(std::uint64_t want) const {
   for (std::size_t i = 0; i < id.size(); ++i)
     if (id[i] == want) return static_cast<long>(i);
   return -1;
+}
+
+void ParticleStore::save(ByteWriter& w) const {
+  w.tag("PART");
+  w.put(x), w.put(v), w.put(omega), w.put(f), w.put(t), w.put(f_ext);
+  w.put(radius), w.put(mass), w.put(inv_mass), w.put(inv_inertia);
+  w.put(material), w.put(id), w.put(next_id_);
+}
+
+void ParticleStore::load(ByteReader& r) {
+  r.tag("PART");
+  r.get(x), r.get(v), r.get(omega), r.get(f), r.get(t), r.get(f_ext);
+  r.get(radius), r.get(mass), r.get(inv_mass), r.get(inv_inertia);
+  r.get(material), r.get(id), r.get(next_id_);
+  const std::size_t n = x.size();
+  for (std::size_t s :
+       {v.size(), omega.size(), f.size(), t.size(), f_ext.size(), radius.size(), mass.size(),
+        inv_mass.size(), inv_inertia.size(), material.size(), id.size()})
+    if (s != n) throw std::runtime_error("checkpoint: particle arrays of different lengths");
 }
 
 }  // namespace silodem

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/bytes.hpp"
 #include "core/vec3.hpp"
 
 namespace silodem {
@@ -28,6 +29,9 @@ class ParticleStore {
   // Index of a stable id, or -1 (linear search: for tests and tools, not for loops).
   long index_of(std::uint64_t id) const;
   std::uint64_t next_id() const { return next_id_; }
+  // Checkpoint: every array and the id counter.
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r);
 
  private:
   std::uint64_t next_id_ = 0;

@@ -93,7 +93,7 @@ void Simulation::step() {
   }
   time_ += dt;
   ++steps_;
-  if (steps_ % 256 == 0) check_state();
+  if (steps_ % 256 == 0 || steps_ == 1) check_state();
   run_hooks(Phase::StepEnd);
 }
 
@@ -114,6 +114,8 @@ void Simulation::compute_forces() {
     f_buf_.resize(std::size_t(nt));
     t_buf_.resize(std::size_t(nt));
   }
+  flags_.assign(std::size_t(nt), OverlapFlag{});
+  const double guard = s_.max_overlap > 0 ? s_.max_overlap : 1e300;
   int team = 1;
 #pragma omp parallel num_threads(nt)
   {
@@ -146,6 +148,8 @@ void Simulation::compute_forces() {
           continue;
         }
         const ContactGeometry g = pair_geometry(bi, body(p_, j));
+        if (g.overlap > guard * std::min(p_.radius[i], p_.radius[j]) && flags_[tid].i < 0)
+          flags_[tid] = {long(i), long(j), g.overlap};
         const ContactResult r = evaluate_contact(law, g, st, dt);
         fb[i] += r.force_i;
         fb[j] -= r.force_i;
@@ -167,6 +171,8 @@ void Simulation::compute_forces() {
           continue;
         }
         const ContactGeometry g = wall_geometry(body(p_, i), hit.n, hit.distance, w.velocity());
+        if (g.overlap > guard * p_.radius[i] && flags_[tid].i < 0)
+          flags_[tid] = {long(i), -1 - long(list_.wall[e]), g.overlap};
         const ContactResult r = evaluate_contact(law, g, st, dt);
         fb[i] += r.force_i;
         tb[i] += r.torque_i;
@@ -185,6 +191,34 @@ void Simulation::compute_forces() {
       p_.t[i] = t;
     }
   }
+  for (const auto& fl : flags_)
+    if (fl.i >= 0) overlap_stop(std::size_t(fl.i), fl.j, fl.overlap);
+}
+
+std::string Simulation::likely_cause(std::size_t i) const {
+  const int m = p_.material[i];
+  const double t_col = std::min(model_.pair_collision_time(m, m, p_.mass[i], p_.mass[i]),
+                                model_.wall_collision_time(m, p_.mass[i]));
+  if (s_.dt > t_col / 10.0)
+    return fmt::format(
+        "the time step dt = {:.3g} s is {:.2g} x this particle's collision time "
+        "t_col = {:.3g} s (use dt <= t_col / 10, better t_col / 50)",
+        s_.dt, s_.dt / t_col, t_col);
+  return fmt::format(
+      "a particle placed inside a wall or another particle, or a contact too "
+      "soft for the load (dt = {:.3g} s = t_col / {:.0f})",
+      s_.dt, t_col / s_.dt);
+}
+
+void Simulation::overlap_stop(std::size_t i, long j, double overlap) const {
+  const std::string with =
+      j >= 0 ? fmt::format("particle {}", p_.id[std::size_t(j)]) : fmt::format("wall {}", -1 - j);
+  throw SimulationError(fmt::format(
+      "overlap guard at step {} (t = {:.6g} s): particle {} at ({:.4g}, {:.4g}, {:.4g}) m, "
+      "velocity ({:.3g}, {:.3g}, {:.3g}) m/s, overlaps {} by {:.3g} m = {:.2f} of its radius "
+      "(limit {}); likely cause: {}",
+      steps_, time_, p_.id[i], p_.x[i].x, p_.x[i].y, p_.x[i].z, p_.v[i].x, p_.v[i].y, p_.v[i].z,
+      with, overlap, overlap / p_.radius[i], s_.max_overlap, likely_cause(i)));
 }
 
 void Simulation::remove_particles(std::vector<std::size_t> idx) {
@@ -280,7 +314,15 @@ EnergyBudget Simulation::energy() const {
 }
 
 void Simulation::check_state() const {
+  const double v2max = s_.max_speed > 0 ? s_.max_speed * s_.max_speed : 1e300;
   for (std::size_t i = 0; i < p_.size(); ++i) {
+    if (norm2(p_.v[i]) > v2max && is_finite(p_.v[i]))
+      throw SimulationError(fmt::format(
+          "speed guard at step {} (t = {:.6g} s): particle {} at ({:.4g}, {:.4g}, {:.4g}) m moves "
+          "at {:.3g} m/s, velocity ({:.3g}, {:.3g}, {:.3g}), above the bound {:.3g} m/s; likely "
+          "cause: {}",
+          steps_, time_, p_.id[i], p_.x[i].x, p_.x[i].y, p_.x[i].z, norm(p_.v[i]), p_.v[i].x,
+          p_.v[i].y, p_.v[i].z, s_.max_speed, likely_cause(i)));
     if (!is_finite(p_.x[i]) || !is_finite(p_.v[i]) || !is_finite(p_.omega[i]))
       throw SimulationError(fmt::format(
           "particle {} has a non-finite state at step {} (t = {:.6g} s): position ({}, {}, {}), "
@@ -289,6 +331,28 @@ void Simulation::check_state() const {
           p_.id[i], steps_, time_, p_.x[i].x, p_.x[i].y, p_.x[i].z, p_.v[i].x, p_.v[i].y, p_.v[i].z,
           s_.dt));
   }
+}
+
+void Simulation::save(ByteWriter& w) const {
+  w.tag("SIMU");
+  w.put(time_), w.put(steps_), w.put(std::uint8_t(initialized_)),
+      w.put(std::uint8_t(rebuild_pending_));
+  w.put(std::uint64_t(walls_.size()));
+  for (const auto& wl : walls_) w.put(std::uint8_t(wl->enabled));
+  p_.save(w);
+  list_.save(w);
+}
+
+void Simulation::load(ByteReader& r) {
+  r.tag("SIMU");
+  r.get(time_), r.get(steps_);
+  initialized_ = r.get<std::uint8_t>() != 0;
+  rebuild_pending_ = r.get<std::uint8_t>() != 0;
+  if (r.get<std::uint64_t>() != walls_.size())
+    throw std::runtime_error("checkpoint: the case has a different number of walls");
+  for (auto& wl : walls_) wl->enabled = r.get<std::uint8_t>() != 0;
+  p_.load(r);
+  list_.load(r);
 }
 
 }  // namespace silodem

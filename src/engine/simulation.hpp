@@ -6,6 +6,7 @@
 //   hooks(end)
 #pragma once
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "engine/hooks.hpp"
@@ -21,6 +22,10 @@ struct SimulationSettings {
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
   double skin = 1e-3;             // m, Verlet skin
   int threads = 0;                // 0 = OpenMP default
+  // Guards: the run stops with a diagnostic when a particle is faster than max_speed (m/s; 0 =
+  // no bound) or a contact overlaps by more than max_overlap times the smaller radius (0 = off).
+  double max_speed = 0.0;
+  double max_overlap = 0.5;
 };
 
 // What each particle's contacts do right now, for observers (probes, VTK output). Computed on
@@ -70,6 +75,11 @@ class Simulation {
 
   // History of the contact between two particles (by stable id), or nullptr.
   const ContactState* contact_state(std::uint64_t id_a, std::uint64_t id_b, bool* flipped) const;
+  // Checkpoint of the dynamic state: particles, neighbour list with contact history, walls
+  // on/off, time and step counter. The model, settings, walls and hooks come from the case.
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r);
+
   // Per-particle contact counts and cohesive forces of the current state (see ContactTally).
   ContactTally contact_tally() const;
   // Kinetic, rotational, gravitational (relative to z = 0 along -gravity) and spring energy.
@@ -80,6 +90,8 @@ class Simulation {
   void update_neighbors();
   void run_hooks(Phase ph);
   void check_state() const;
+  [[noreturn]] void overlap_stop(std::size_t i, long j, double overlap) const;
+  std::string likely_cause(std::size_t i) const;
 
   ContactModel model_;
   SimulationSettings s_;
@@ -88,7 +100,12 @@ class Simulation {
   VerletList list_;
   std::vector<Hook> hooks_;
   std::vector<std::vector<Vec3>> f_buf_, t_buf_;  // per-thread force/torque buffers
-  std::vector<Vec3> v_half_, w_half_;             // half-step velocities of velocity Verlet
+  struct OverlapFlag {
+    long i = -1, j = -1;  // j = -1 - wall index for a wall contact
+    double overlap = 0.0;
+  };
+  std::vector<OverlapFlag> flags_;     // per thread: the first contact over the overlap guard
+  std::vector<Vec3> v_half_, w_half_;  // half-step velocities of velocity Verlet
   double time_ = 0.0;
   long steps_ = 0;
   bool initialized_ = false;

@@ -19,6 +19,26 @@ CsvWriter::CsvWriter(std::string path, const std::vector<std::string>& columns)
   fmt::print(f_, "{}\n", fmt::join(columns, ","));
 }
 
+CsvWriter::CsvWriter(std::string path, std::size_t ncol, std::uint64_t bytes)
+    : path_(std::move(path)), ncol_(ncol) {
+  const std::string partial = path_ + ".partial";
+  std::error_code ec;
+  if (!std::filesystem::exists(partial) || std::filesystem::file_size(partial, ec) < bytes)
+    throw std::runtime_error(
+        fmt::format("cannot resume {}: it is missing or shorter than at the checkpoint ({} bytes)",
+                    partial, bytes));
+  std::filesystem::resize_file(partial, bytes);
+  f_ = std::fopen(partial.c_str(), "ab");
+  if (!f_)
+    throw std::runtime_error(fmt::format("cannot append to {}: {}", partial, std::strerror(errno)));
+}
+
+std::uint64_t CsvWriter::flush() {
+  if (!f_) return 0;
+  if (std::fflush(f_) != 0) throw std::runtime_error("cannot write " + path_ + ".partial");
+  return std::uint64_t(std::ftell(f_));
+}
+
 CsvWriter::~CsvWriter() {
   if (f_) std::fclose(f_);  // left as .partial: the run did not finish
 }

@@ -2,6 +2,7 @@
 // CSV output written to "<name>.partial" and renamed when complete, so an interrupted run never
 // leaves a file that looks finished.
 #pragma once
+#include <cstdint>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -11,6 +12,9 @@ namespace silodem {
 class CsvWriter {
  public:
   CsvWriter(std::string path, const std::vector<std::string>& columns);
+  // Continues "<path>.partial" of an interrupted run: cut back to `bytes` (its size at the
+  // checkpoint) and append from there.
+  CsvWriter(std::string path, std::size_t ncol, std::uint64_t bytes);
   ~CsvWriter();
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
@@ -18,6 +22,8 @@ class CsvWriter {
   void row(const std::vector<double>& values);
   // Appends one row of already formatted cells (no quoting: cells must not contain commas).
   void row(const std::vector<std::string>& cells);
+  // Flushes to the OS and returns the file's size in bytes (for a checkpoint).
+  std::uint64_t flush();
   // Flushes, closes and renames to the final name.
   void finish();
   const std::string& path() const { return path_; }

@@ -47,6 +47,13 @@ class PvdCollection {
  public:
   explicit PvdCollection(std::string path) : path_(std::move(path)) {}
   void add(double time, const std::string& file);  // file relative to the .pvd
+  // A frame written before a checkpoint (resume): listed again without rewriting the file.
+  void restore(double time, const std::string& file) { items_.emplace_back(time, file); }
+  std::vector<double> times() const {
+    std::vector<double> t;
+    for (const auto& it : items_) t.push_back(it.first);
+    return t;
+  }
   void write() const;
   std::size_t frames() const { return items_.size(); }
 

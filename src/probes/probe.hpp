@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bytes.hpp"
 #include "engine/simulation.hpp"
 #include "scenario/case.hpp"
 
@@ -43,6 +44,9 @@ class Probe {
   virtual void sample(ProbeView& view, std::vector<ProbeRow>& rows) = 0;
   // At the end of the run (time averages); appends zero or more rows.
   virtual void finish(std::vector<ProbeRow>& rows) { (void)rows; }
+  // Checkpoint of the probe's accumulators (none by default).
+  virtual void save(ByteWriter& w) const { (void)w; }
+  virtual void load(ByteReader& r) { (void)r; }
 };
 
 // "In the hopper": above the outlet plane (z >= 0); what has passed the outlet is on its way out.

@@ -27,6 +27,8 @@ class SlabProbe final : public Probe {
                       p.x[i].z, p.v[i].x, p.v[i].y, p.v[i].z, p.radius[i]});
     }
   }
+  void save(ByteWriter& w) const override { w.put(std::uint64_t(next_)); }
+  void load(ByteReader& r) override { next_ = std::size_t(r.get<std::uint64_t>()); }
 
  private:
   std::vector<double> times_;  // sorted

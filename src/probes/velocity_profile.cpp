@@ -4,6 +4,7 @@
 // `bin` from the cylinder wall to the cylinder wall) and their v_z averaged over all samples in
 // the time window (each particle in each sample counts once). Rows come at the end of the run.
 #include <cmath>
+#include <stdexcept>
 
 #include "probes/probes.hpp"
 
@@ -57,6 +58,14 @@ class VelocityProfileProbe final : public Probe {
         rows.push_back({heights_[h], x0_ + (b + 0.5) * bin_, mean, std::sqrt(var), n,
                         any ? first_ : nan, any ? last_ : nan});
       }
+  }
+  void save(ByteWriter& w) const override {
+    w.put(sum_), w.put(sum2_), w.put(count_), w.put(first_), w.put(last_);
+  }
+  void load(ByteReader& r) override {
+    r.get(sum_), r.get(sum2_), r.get(count_), r.get(first_), r.get(last_);
+    if (sum_.size() != count_.size() || sum2_.size() != count_.size())
+      throw std::runtime_error("checkpoint: velocity profile bins differ from the case");
   }
 
  private:

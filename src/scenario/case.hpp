@@ -23,6 +23,9 @@ struct TimeSpec {
   double skin = 0.25;               // Verlet skin / smallest CG diameter
   int threads = 0;                  // 0 = all cores
   std::uint64_t seed = 1;
+  double max_speed = 0.0;             // m/s guard; 0 = derived (silo) or none (generic)
+  double max_overlap = 0.5;           // guard, fraction of the smaller radius; 0 = off
+  double checkpoint_interval = 10.0;  // s of discharge between checkpoints; 0 = signals only
   SourcePlace time_step_place, steps_place;
 };
 

@@ -5,12 +5,15 @@
 // outside the outlet, are removed and counted as lost. Ends when the target fraction has left or
 // the silo is empty, when nothing has left for `stall_time` (a stopped flow: arching, reported as
 // such; the clock starts once a particle could have reached the sink), at `max_time`, or on a
-// simulation error (the results up to then are kept).
+// simulation error (the results up to then are kept), or when the caller asks it to stop (a
+// signal; the state is then checkpointed and the run can be resumed).
 #pragma once
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
+#include "core/bytes.hpp"
 #include "engine/simulation.hpp"
 #include "scenario/case.hpp"
 
@@ -29,10 +32,10 @@ struct DischargeState {
   double recent_rate = 0.0;  // kg/s over the last bin
 };
 
-enum class DischargeEnd { Emptied, FlowStopped, TimeLimit, Error };
+enum class DischargeEnd { Emptied, FlowStopped, TimeLimit, Error, Interrupted };
 
 struct DischargeResult {
-  std::vector<OutletRecord> outflow;
+  std::vector<OutletRecord> outflow;  // sorted by time
   double filled_mass = 0.0, discharged_mass = 0.0, lost_mass = 0.0, remaining_mass = 0.0;
   long particles_filled = 0, particles_lost = 0;
   double discharge_time = 0.0;  // s from the valve opening to the last particle out
@@ -44,6 +47,49 @@ struct DischargeResult {
 
 using DischargeProgress = std::function<void(const DischargeState&)>;
 
+// How a caller steers a long discharge: `stop` is polled after every step (a signal arrived: the
+// run returns with DischargeEnd::Interrupted at once, its state ready to be checkpointed);
+// `checkpoint` is called every `checkpoint_interval` s of discharge (0 = never).
+struct DischargeControl {
+  std::function<bool()> stop;
+  std::function<void()> checkpoint;
+  double checkpoint_interval = 0.0;
+};
+
+// The discharge as a resumable object: open() the valve, run() to the end; save()/load() carry
+// its whole state (records, sink bookkeeping, position inside the current check interval) across
+// a checkpoint, so that a resumed run continues bit for bit.
+class Discharge {
+ public:
+  Discharge(Simulation& sim, const SiloGeometry& g, std::size_t valve_index,
+            const DischargeSpec& spec);
+  void open();  // t = 0: the valve opens; the filled mass is what is in the silo now
+  DischargeResult run(const DischargeProgress& progress, const DischargeControl& control = {});
+  double t0() const { return t0_; }  // simulation time at the valve opening
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r);
+
+ private:
+  DischargeResult finish(DischargeResult r) const;
+  void check(double t, std::vector<std::size_t>& remove);
+
+  Simulation& sim_;
+  SiloGeometry g_;
+  std::size_t valve_;
+  DischargeSpec spec_;
+  long check_every_ = 1;
+  double fall_ = 0.0;
+  // State (checkpointed).
+  double t0_ = 0.0;
+  long steps0_ = 0;
+  long step_in_interval_ = 0;
+  double next_checkpoint_ = 0.0;
+  double last_out_ = 0.0, bin_mass_ = 0.0, bin_start_ = 0.0, recent_rate_ = 0.0;
+  std::map<std::uint64_t, double> crossed_;  // id -> time its centre crossed z = 0 (-1: outside)
+  DischargeResult r_;                        // records and masses so far
+};
+
+// Opens the valve and runs to the end (no checkpoints).
 DischargeResult discharge(Simulation& sim, const SiloGeometry& g, std::size_t valve_index,
                           const DischargeSpec& spec, const DischargeProgress& progress);
 

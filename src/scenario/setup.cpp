@@ -145,6 +145,14 @@ SimulationSettings settings_of(const Case& c, const CaseReport& report, double d
   s.gravity = c.time.gravity;
   s.skin = c.time.skin * d_min;
   s.threads = threads_override > 0 ? threads_override : c.time.threads;
+  s.max_overlap = c.time.max_overlap;
+  s.max_speed = c.time.max_speed;
+  if (s.max_speed == 0.0 && c.silo.present) {
+    // Nothing in a silo run falls further than from the top of the silo to the sink.
+    const double g = std::max(norm(c.time.gravity), 1e-30);
+    s.max_speed =
+        3.0 * std::sqrt(2.0 * g * (c.silo.geometry.total_height() + c.discharge.sink_depth)) + 1.0;
+  }
   return s;
 }
 

@@ -141,4 +141,19 @@ bool VerletList::needs_rebuild(const ParticleStore& p) const {
   return moved != 0;
 }
 
+void VerletList::save(ByteWriter& w) const {
+  w.tag("LIST");
+  w.put(offset), w.put(partner), w.put(state), w.put(wall_offset), w.put(wall), w.put(wall_state);
+  w.put(builds), w.put(skin), w.put(x_at_build_);
+  w.put(std::uint8_t(stashed_)), w.put(saved_pairs_), w.put(saved_walls_);
+}
+
+void VerletList::load(ByteReader& r) {
+  r.tag("LIST");
+  r.get(offset), r.get(partner), r.get(state), r.get(wall_offset), r.get(wall), r.get(wall_state);
+  r.get(builds), r.get(skin), r.get(x_at_build_);
+  stashed_ = r.get<std::uint8_t>() != 0;
+  r.get(saved_pairs_), r.get(saved_walls_);
+}
+
 }  // namespace silodem

@@ -22,6 +22,10 @@ class VerletList {
   bool needs_rebuild(const ParticleStore& p) const;
   // Save the current history keyed by ids (call before particles are removed or reordered).
   void stash_history(const ParticleStore& p);
+  // Checkpoint: the list as built (its pair order fixes the force summation order, so a resumed
+  // run continues bit for bit), the history, and the positions at the build.
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r);
 
   std::vector<int> offset, partner;  // pairs of i: partner[offset[i] .. offset[i+1])
   std::vector<ContactState> state;

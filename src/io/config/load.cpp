@@ -320,6 +320,9 @@ Case build(const toml::table& root, const std::string& file) {
     c.time.skin = v.number("skin");
     c.time.threads = int(v.number("threads"));
     c.time.seed = std::uint64_t(v.number("seed"));
+    c.time.max_speed = v.number("max_speed");
+    c.time.max_overlap = v.number("max_overlap");
+    c.time.checkpoint_interval = v.number("checkpoint_interval");
     c.time.time_step_place = v.places.count("time_step") ? v.places.at("time_step") : v.place;
     c.time.steps_place = v.place;
   }

@@ -40,6 +40,28 @@ const std::vector<Section>& sections() {
                .with_default(1)
                .at_least(0)
                .at_most(9.0e15),
+           F::number("max_speed",
+                     "guard: stop when a particle moves faster; 0 = derived (silo: "
+                     "3 x the free-fall speed from the silo top to the sink + 1 m/s; generic "
+                     "case: no bound)",
+                     "m/s")
+               .with_default(0)
+               .at_least(0)
+               .at_most(1e6),
+           F::number("max_overlap",
+                     "guard: stop when a contact overlaps by more than this "
+                     "fraction of the smaller radius; 0 = off")
+               .with_default(0.5)
+               .at_least(0)
+               .at_most(10),
+           F::number("checkpoint_interval",
+                     "simulated time between checkpoints of a silo "
+                     "discharge (checkpoint.bin; also written on SIGINT/SIGTERM); 0 = only on a "
+                     "signal",
+                     "s")
+               .with_default(10)
+               .at_least(0)
+               .at_most(1e6),
        }},
       {"coarse_graining",
        "coarse-graining factor and scaling policies (PHYSICS.md 1)",

@@ -1,0 +1,417 @@
+// SPDX-License-Identifier: MIT
+// `silodem run` of a silo case: fill, discharge with probes and ParaView frames, outlet
+// statistics, summary; checkpoints every [simulation] checkpoint_interval s of discharge and on
+// SIGINT/SIGTERM; `--resume DIR` continues from DIR/checkpoint.bin bit for bit.
+#include <fmt/format.h>
+#include <toml++/toml.h>
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/observers.hpp"
+#include "app/progress.hpp"
+#include "app/run_common.hpp"
+#include "io/checkpoint.hpp"
+#include "io/config/load.hpp"
+#include "io/csv.hpp"
+#include "scenario/discharge.hpp"
+#include "scenario/layered_filling.hpp"
+#include "scenario/outlet_stats.hpp"
+
+namespace fs = std::filesystem;
+
+namespace silodem::app {
+namespace {
+
+// ---- signals ----------------------------------------------------------------------------------
+
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void on_signal(int sig) {
+  g_signal = sig;
+  std::signal(sig, SIG_DFL);  // a second signal ends the program at once
+}
+
+struct SignalGuard {
+  SignalGuard() {
+    g_signal = 0;
+    std::signal(SIGINT, on_signal);
+    std::signal(SIGTERM, on_signal);
+  }
+  ~SignalGuard() {
+    std::signal(SIGINT, SIG_DFL);
+    std::signal(SIGTERM, SIG_DFL);
+  }
+};
+
+struct InterruptedFill {};
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The case as the run directory holds it (case.toml + overrides.txt), to detect a changed case.
+std::uint64_t case_hash(const fs::path& out) {
+  return text_hash(read_text(out / "case.toml") + "\n--\n" + read_text(out / "overrides.txt"));
+}
+
+std::vector<std::string> overrides_in(const fs::path& out) {
+  std::vector<std::string> v;
+  std::istringstream in(read_text(out / "overrides.txt"));
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) v.push_back(line);
+  return v;
+}
+
+void write_fill_csv(const fs::path& path, const Case& c, const FillReport& f) {
+  CsvWriter w(path.string(),
+              {"segment", "coal", "z_low_m", "z_high_m", "z_low_settled_m", "z_high_settled_m",
+               "particles", "mass_kg", "target_mass_kg", "bulk_density_kg_m3",
+               "measured_bulk_density_kg_m3", "solid_fraction", "settle_time_s", "settled"});
+  auto num = [](double x) { return fmt::format("{}", x); };
+  for (const auto& s : f.segments)
+    w.row(std::vector<std::string>{
+        fmt::format("H{}", s.index), c.coals[std::size_t(s.coal)].name, num(s.z_low), num(s.z_high),
+        num(s.z_low_settled), num(s.z_high_settled), fmt::format("{}", s.particles), num(s.mass),
+        num(s.target_mass), num(s.bulk_density), num(s.bulk_density_measured),
+        num(s.solid_fraction), num(s.settle_time), s.settled ? "true" : "false"});
+  w.finish();
+}
+
+void write_outlet_csv(const fs::path& path, const Case& c, const std::vector<OutletBin>& bins) {
+  std::vector<std::string> cols = {"t_start_s", "t_end_s", "mass_kg", "rate_kg_s", "cumulative_kg"};
+  for (const auto& coal : c.coals) cols.push_back("fraction_" + coal.name);
+  cols.push_back("calorific_kcal_kg");
+  CsvWriter w(path.string(), cols);
+  for (const auto& b : bins) {
+    std::vector<double> row = {b.t_start, b.t_end, b.mass, b.rate, b.cumulative};
+    row.insert(row.end(), b.fraction.begin(), b.fraction.end());
+    row.push_back(b.calorific);
+    w.row(row);
+  }
+  w.finish();
+}
+
+// The measured outlet data, copied into the run directory, and its errors against the bins.
+toml::table measured_summary(const Case& c, const fs::path& out,
+                             const std::vector<OutletBin>& bins) {
+  const MeasuredData& m = c.measured;
+  CsvWriter w((out / "measured.csv").string(), {"t_s", "rate_kg_s", "calorific_kcal_kg"});
+  for (std::size_t k = 0; k < m.t.size(); ++k) w.row({m.t[k], m.rate[k], m.calorific[k]});
+  w.finish();
+  const MeasuredErrors e = compare_with_measured(bins, m);
+  toml::table t{{"file", "measured.csv"},
+                {"source", c.output.measured},
+                {"points", int64_t(m.t.size())},
+                {"rate_points", e.rate_points},
+                {"calorific_points", e.calorific_points}};
+  auto put = [&](const char* key, double x) {
+    if (std::isfinite(x)) t.insert(key, x);
+  };
+  put("rate_max_rel_error", e.rate_max);
+  put("rate_mean_rel_error", e.rate_mean);
+  put("calorific_max_rel_error", e.calorific_max);
+  put("calorific_mean_rel_error", e.calorific_mean);
+  return t;
+}
+
+// ---- one silo run -----------------------------------------------------------------------------
+
+class SiloRun {
+ public:
+  SiloRun(const RunOptions& o, const Case& c, const CaseReport& report, ContactModel model,
+          int threads)
+      : o_(o), c_(c), report_(report) {
+    sim_ = build_silo_simulation(c, report, std::move(model), &valve_, threads);
+    dis_ = std::make_unique<Discharge>(*sim_, c.silo.geometry, valve_, c.discharge);
+  }
+
+  // A new run into an empty DIR: fill, then discharge.
+  int start(const fs::path& out) {
+    out_ = out;
+    write_summary_running();
+    Random rng(c_.time.seed);
+    try {
+      fill_ = fill_silo(*sim_, c_, report_.segment_coal, rng, [&](const std::string& s) {
+        if (g_signal) throw InterruptedFill{};
+        progress_.show(fmt::format("fill {}  particles {}  wall {:.0f} s", s,
+                                   sim_->particles().size(), wall()));
+      });
+    } catch (const InterruptedFill&) {
+      progress_.finish();
+      error_ = "interrupted during the fill (nothing to resume: run the case again)";
+      write_summary("interrupted during the fill");
+      fmt::print(stderr, "{}\n", error_);
+      return kExitInterrupted;
+    } catch (const SimulationError& e) {
+      progress_.finish();
+      error_ = e.what();
+      write_summary("error during the fill");
+      fmt::print(stderr, "simulation error: {}\n", error_);
+      return kExitSimulation;
+    }
+    progress_.finish();
+    write_fill_csv(out_ / "fill.csv", c_, fill_);
+    fmt::print("filled {} particles, {:.3f} kg in {:.0f} s wall ({:.2f} s simulated settling)\n",
+               fill_.particles, fill_.mass, wall(), fill_.settle_time);
+    for (const auto& w : fill_.warnings) fmt::print(stderr, "warning: {}\n", w);
+    dis_->open();
+    observers_ = std::make_unique<Observers>(c_, out_, dis_->t0());
+    observers_->attach(*sim_);
+    observers_->sample(*sim_);  // t = 0: the filled silo
+    checkpoint();               // a kill from here on loses at most checkpoint_interval
+    return discharge();
+  }
+
+  // Continue an interrupted or killed run from DIR/checkpoint.bin.
+  int resume(const fs::path& out, ByteReader& r) {
+    out_ = out;
+    r.tag("FILL");
+    r.get(wall_before_);
+    r.get(fill_.particles), r.get(fill_.mass), r.get(fill_.settle_time);
+    r.get(fill_.max_boundary_offset);
+    const auto nw = r.get<std::uint64_t>();
+    for (std::uint64_t k = 0; k < nw; ++k) fill_.warnings.push_back(r.get<std::string>());
+    sim_->load(r);
+    dis_->load(r);
+    observers_ = std::make_unique<Observers>(c_, out_, dis_->t0(), r);
+    if (!r.done()) throw std::runtime_error("checkpoint: unread bytes at the end");
+    observers_->attach(*sim_);
+    write_summary_running();
+    fmt::print("resumed at t = {:.3f} s after the valve opened ({} particles, step {})\n",
+               sim_->time() - dis_->t0(), sim_->particles().size(), sim_->step_count());
+    return discharge();
+  }
+
+ private:
+  double wall() const { return wall_before_ + progress_.elapsed(); }
+
+  void checkpoint() {
+    ByteWriter w;
+    w.put(case_hash(out_));
+    w.put(std::int32_t(sim_->settings().threads));
+    w.tag("FILL");
+    w.put(wall());
+    w.put(fill_.particles), w.put(fill_.mass), w.put(fill_.settle_time);
+    w.put(fill_.max_boundary_offset);
+    w.put(std::uint64_t(fill_.warnings.size()));
+    for (const auto& s : fill_.warnings) w.put(s);
+    sim_->save(w);
+    dis_->save(w);
+    observers_->save(w);
+    write_checkpoint((out_ / "checkpoint.bin").string(), w);
+  }
+
+  int discharge() {
+    const double t_wall0 = wall();
+    DischargeControl control;
+    control.stop = [] { return g_signal != 0; };
+    control.checkpoint = [this] { checkpoint(); };
+    control.checkpoint_interval = c_.time.checkpoint_interval;
+    dis_result_ = dis_->run(
+        [&](const DischargeState& s) {
+          const double frac = s.discharged / std::max(s.filled, 1e-30);
+          progress_.show(fmt::format(
+              "discharge t = {:.2f} s  particles left {}  out {:.3f} kg ({:.1f}%)  "
+              "rate {:.3f} kg/s  wall {:.0f} s  ETA {}",
+              s.t, s.particles_left, s.discharged, 100 * frac, s.recent_rate, wall(),
+              frac > 0.01 ? fmt::format("{:.0f} s", (wall() - t_wall0) * (1 / frac - 1)) : "?"));
+        },
+        control);
+    progress_.finish();
+    const DischargeResult& d = dis_result_;
+    if (d.end == DischargeEnd::Interrupted) {
+      checkpoint();
+      error_ = fmt::format("interrupted by signal {} at t = {:.3f} s", int(g_signal), d.end_time);
+      write_summary("interrupted");
+      fmt::print(stderr,
+                 "interrupted at t = {:.3f} s of discharge; checkpoint written; continue with: "
+                 "silodem run --resume {}\n",
+                 d.end_time, out_.string());
+      return kExitInterrupted;
+    }
+    if (d.end == DischargeEnd::Error) error_ = d.error;
+    return finish();
+  }
+
+  int finish() {
+    const DischargeResult& d = dis_result_;
+    std::vector<double> q;
+    for (const auto& coal : c_.coals) q.push_back(coal.heating_value);
+    const std::vector<OutletBin> bins = outlet_bins(d.outflow, c_.discharge.bin, d.end_time, q);
+    write_outlet_csv(out_ / "outlet.csv", c_, bins);
+    observers_->finish();
+    {  // The final state, bit for bit (particles, contact history): for comparisons and tests.
+      ByteWriter w;
+      sim_->save(w);
+      write_checkpoint((out_ / "final_state.bin").string(), w);
+    }
+    const char* end = d.end == DischargeEnd::Emptied ? "emptied"
+                      : d.end == DischargeEnd::FlowStopped
+                          ? "flow stopped (no outflow for stall_time)"
+                      : d.end == DischargeEnd::Error ? "error during the discharge"
+                                                     : "time limit";
+    toml::table summary = summary_table(end, bins);
+    write_text(out_ / "summary.json", to_json(summary));
+    fs::remove(out_ / "checkpoint.bin");  // complete: nothing to resume
+    if (!error_.empty()) {
+      fmt::print(stderr, "simulation error: {}\n", error_);
+      if (o_.report) report_command(out_.string(), true);
+      return kExitSimulation;
+    }
+    fmt::print(
+        "{}: {:.3f} of {:.3f} kg out in {:.2f} s (mean {:.3f} kg/s), {:.3f} kg left, {:.3g} kg "
+        "lost; wrote {}\n",
+        end, d.discharged_mass, d.filled_mass, d.discharge_time,
+        d.discharge_time > 0 ? d.discharged_mass / d.discharge_time : 0.0, d.remaining_mass,
+        d.lost_mass, out_.string());
+    if (o_.report) report_command(out_.string(), true);
+    // A stopped flow is a result, not a success: the silo did not empty.
+    return d.end == DischargeEnd::Emptied ? kExitOk : kExitNotEmptied;
+  }
+
+  // summary.json before the end: complete = false, so a killed run never looks finished.
+  void write_summary_running() {
+    toml::table s{{"complete", false},
+                  {"end", "running"},
+                  {"title", c_.title},
+                  {"case", o_.case_path},
+                  {"scenario", c_.fill.scenario},
+                  {"resume", fmt::format("silodem run --resume {}", out_.string())}};
+    write_text(out_ / "summary.json", to_json(s));
+  }
+
+  void write_summary(const char* end) {
+    toml::table s = summary_table(end, {});
+    write_text(out_ / "summary.json", to_json(s));
+  }
+
+  toml::table summary_table(const char* end, const std::vector<OutletBin>& bins) {
+    const DischargeResult& d = dis_result_;
+    std::vector<double> q, out_per_coal(c_.coals.size(), 0.0);
+    for (const auto& coal : c_.coals) q.push_back(coal.heating_value);
+    for (const auto& r : d.outflow) out_per_coal[std::size_t(r.coal)] += r.mass;
+    const double ledger_error =
+        std::fabs(d.filled_mass - (d.remaining_mass + d.discharged_mass + d.lost_mass));
+    toml::array fill_warnings, coals;
+    for (const auto& w : fill_.warnings) fill_warnings.push_back(w);
+    for (std::size_t k = 0; k < c_.coals.size(); ++k)
+      coals.push_back(toml::table{{"name", c_.coals[k].name},
+                                  {"symbol", c_.coal_symbols[k]},
+                                  {"heating_value_kcal_kg", c_.coals[k].heating_value}});
+    const SiloGeometry& g = c_.silo.geometry;
+    const bool complete = error_.empty() && std::string(end) != "interrupted" &&
+                          std::string(end).rfind("interrupted", 0) != 0;
+    toml::table summary{
+        {"complete", complete},
+        {"error", error_},
+        {"title", c_.title},
+        {"case", o_.case_path},
+        {"coals", std::move(coals)},
+        {"silo", toml::table{{"outlet_diameter_m", g.outlet_diameter},
+                             {"cone_height_m", g.cone_height},
+                             {"cylinder_diameter_m", g.cylinder_diameter},
+                             {"cylinder_height_m", g.cylinder_height}}},
+        {"probe_files", observers_ ? observers_->files() : toml::array{}},
+        {"vtk_frames", int64_t(observers_ ? observers_->frames() : 0)},
+        {"scenario", c_.fill.scenario},
+        {"filled_mass_kg", d.filled_mass},
+        {"discharged_mass_kg", d.discharged_mass},
+        {"remaining_mass_kg", d.remaining_mass},
+        {"lost_mass_kg", d.lost_mass},
+        {"particles_lost", d.particles_lost},
+        {"mass_ledger_error_kg", ledger_error},
+        {"discharge_time_s", d.discharge_time},
+        // Mean rate up to the last particle out (a stall after it does not count).
+        {"mean_rate_kg_s", d.discharge_time > 0 ? d.discharged_mass / d.discharge_time : 0.0},
+        {"flow_stopped", d.end == DischargeEnd::FlowStopped},
+        {"end", end},
+        {"particles_filled", d.particles_filled},
+        {"fill_settle_time_s", fill_.settle_time},
+        {"fill_max_boundary_offset_m", fill_.max_boundary_offset},
+        {"outlet_mean_calorific_kcal_kg", mixture_calorific(out_per_coal, q)},
+        {"inventory_calorific_kcal_kg", report_.inventory_calorific},
+        {"k", report_.k},
+        {"time_step_s", sim_->dt()},
+        {"discharge_steps", d.steps},
+        {"discharge_end_time_s", d.end_time},
+        {"threads", sim_->settings().threads},
+        {"fill_warnings", std::move(fill_warnings)},
+        {"wall_time_s", wall()},
+    };
+    if (!complete && std::string(end) == "interrupted")
+      summary.insert("resume", fmt::format("silodem run --resume {}", out_.string()));
+    if (!bins.empty() && !c_.measured.t.empty())
+      summary.insert("measured", measured_summary(c_, out_, bins));
+    return summary;
+  }
+
+  const RunOptions& o_;
+  const Case& c_;
+  const CaseReport& report_;
+  fs::path out_;
+  std::unique_ptr<Simulation> sim_;
+  std::size_t valve_ = 0;
+  std::unique_ptr<Discharge> dis_;
+  std::unique_ptr<Observers> observers_;
+  FillReport fill_;
+  DischargeResult dis_result_;
+  std::string error_;
+  ProgressLine progress_;
+  double wall_before_ = 0.0;
+};
+
+}  // namespace
+
+int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, ContactModel model) {
+  SiloRun run(o, c, report, std::move(model), o.threads);
+  const fs::path out = prepare_out(o, c, report);
+  SignalGuard signals;
+  return run.start(out);
+}
+
+int resume_silo(const RunOptions& o) {
+  const fs::path out(o.resume_dir);
+  const fs::path ck = out / "checkpoint.bin";
+  if (!fs::exists(ck)) {
+    const std::string s = read_text(out / "summary.json");
+    throw InputError({}, "--resume",
+                     s.find("\"complete\" : true") != std::string::npos ||
+                             s.find("\"complete\": true") != std::string::npos
+                         ? fmt::format("'{}' is a complete run: nothing to resume", o.resume_dir)
+                         : fmt::format("'{}' has no checkpoint.bin (a run interrupted before "
+                                       "its discharge began restarts from the case: silodem "
+                                       "run {}/case.toml --out NEW_DIR)",
+                                       o.resume_dir, o.resume_dir));
+  }
+  ByteReader r = read_checkpoint(ck.string());
+  const auto hash = r.get<std::uint64_t>();
+  const auto threads = r.get<std::int32_t>();
+  if (hash != case_hash(out) && !o.force)
+    throw InputError({(out / "case.toml").string(), 0, 0}, "--resume",
+                     "the case file (or overrides.txt) changed since the checkpoint; resuming "
+                     "would mix two cases (use --force to resume anyway)");
+  RunOptions opts = o;
+  opts.case_path = (out / "case.toml").string();
+  opts.overrides = overrides_in(out);
+  const Case c = config::load_case_file(opts.case_path, opts.overrides);
+  if (!c.silo.present) throw InputError({}, "--resume", "only silo runs are resumable");
+  ContactModel model;
+  const CaseReport report = derive_case(c, &model);
+  if (o.threads > 0 && o.threads != threads)
+    fmt::print(stderr,
+               "warning: resuming with {} threads, the run had {}: the result will not be bitwise "
+               "equal to an uninterrupted run (summation order)\n",
+               o.threads, threads);
+  SiloRun run(opts, c, report, std::move(model), o.threads > 0 ? o.threads : threads);
+  SignalGuard signals;
+  return run.resume(out, r);
+}
+
+}  // namespace silodem::app

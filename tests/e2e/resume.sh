@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# End-to-end (issue 5): a run killed with SIGKILL in the middle of its discharge and resumed gives
+# outlet.csv, fill.csv, the probe CSVs and the final state bit for bit equal to an uninterrupted
+# run; SIGINT stops a run within a second with a checkpoint and a message, and it resumes; a
+# changed case file is refused on resume unless --force.
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
+fail=0
+bad() { printf 'FAIL: %s\n' "$*"; fail=1; }
+case=$src/tests/data/small_silo.toml
+# Finer steps and a narrower outlet make the discharge last long enough (several seconds) to be
+# hit in the middle.
+args=(--threads 1 --no-report --set simulation.steps_per_collision=100 --set silo.outlet_diameter_mm=32
+      --set simulation.checkpoint_interval=0.01 --set probes.every=200)
+
+# Waits until DIR/checkpoint.bin exists (the discharge has begun), then a little longer.
+wait_for_discharge() {
+  for _ in $(seq 1 600); do
+    [ -f "$1/checkpoint.bin" ] && { sleep "$2"; return 0; }
+    sleep 0.1
+  done
+  return 1
+}
+
+"$bin" run "$case" --out "$work/a" "${args[@]}" > "$work/a.log" 2>&1 || bad "reference run exited $?"
+
+# SIGKILL in the middle, then --resume.
+"$bin" run "$case" --out "$work/b" "${args[@]}" > "$work/b.log" 2>&1 &
+pid=$!
+wait_for_discharge "$work/b" 2 || bad "run b never reached its discharge"
+kill -9 $pid
+wait $pid 2>/dev/null
+[ -f "$work/b/outlet.csv" ] && bad "run b finished before it was killed (make it longer)"
+grep -q '"complete" : false' "$work/b/summary.json" || bad "a killed run's summary.json must say complete: false"
+ls "$work/b"/probe_*.csv > /dev/null 2>&1 && bad "a killed run left probe CSVs that look complete"
+"$bin" run --resume "$work/b" > "$work/b2.log" 2>&1 || bad "resume of b exited $?: $(tail -2 "$work/b2.log")"
+grep -q "resumed at t = 0.0[0-9]*[1-9]" "$work/b2.log" || bad "b resumed at t = 0 (no periodic checkpoint?): $(grep resumed "$work/b2.log")"
+for f in outlet.csv fill.csv final_state.bin probe_slab.csv probe_velocity_profile.csv \
+         probe_adhesion.csv probe_cohesion_force.csv probe_level.csv probe_coordination.csv; do
+  cmp -s "$work/a/$f" "$work/b/$f" || bad "killed + resumed run: $f differs from the uninterrupted run"
+done
+grep -q '"complete" : true' "$work/b/summary.json" || bad "resumed run: summary.json not complete"
+[ ! -e "$work/b/checkpoint.bin" ] || bad "a complete run keeps no checkpoint"
+"$bin" run --resume "$work/b" > /dev/null 2> "$work/b3.err"
+[ $? -eq 2 ] && grep -q "nothing to resume" "$work/b3.err" || bad "resuming a complete run: $(cat "$work/b3.err")"
+
+# SIGINT: exits within a second with a message and a checkpoint; resumes to the same result.
+"$bin" run "$case" --out "$work/c" "${args[@]}" > "$work/c.log" 2>&1 &
+pid=$!
+wait_for_discharge "$work/c" 1 || bad "run c never reached its discharge"
+t0=$(date +%s.%N)
+kill -INT $pid
+wait $pid
+rc=$?
+t1=$(date +%s.%N)
+[ $rc -eq 130 ] || bad "SIGINT: exit code $rc, expected 130"
+python3 -c "import sys; d = $t1 - $t0; sys.exit(0 if d < 1.0 else 1)" || bad "SIGINT: took more than 1 s to stop"
+grep -q "checkpoint written; continue with: silodem run --resume" "$work/c.log" || bad "SIGINT: no message: $(tail -2 "$work/c.log")"
+[ -f "$work/c/checkpoint.bin" ] || bad "SIGINT: no checkpoint"
+grep -q '"end" : "interrupted"' "$work/c/summary.json" || bad "SIGINT: summary.json does not say interrupted"
+# A changed case is refused, then accepted with --force... but first resume it unchanged.
+cp -r "$work/c" "$work/d"
+echo "# edited" >> "$work/d/case.toml"
+"$bin" run --resume "$work/d" > /dev/null 2> "$work/d.err"
+[ $? -eq 2 ] && grep -q "changed since the checkpoint" "$work/d.err" || bad "changed case: $(cat "$work/d.err")"
+"$bin" run --resume "$work/d" --force > "$work/d.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 100); do grep -q "resumed at" "$work/d.log" && break; sleep 0.1; done
+grep -q "resumed at" "$work/d.log" || bad "--force did not resume: $(cat "$work/d.log")"
+kill -9 $pid
+wait $pid 2>/dev/null
+"$bin" run --resume "$work/c" > "$work/c2.log" 2>&1 || bad "resume of c exited $?"
+for f in outlet.csv final_state.bin probe_slab.csv probe_velocity_profile.csv; do
+  cmp -s "$work/a/$f" "$work/c/$f" || bad "interrupted + resumed run: $f differs"
+done
+
+[ $fail -eq 0 ] && echo "e2e resume ok"
+exit $fail
