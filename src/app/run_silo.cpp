@@ -259,7 +259,9 @@ class SiloRun {
                                                      : "time limit";
     toml::table summary = summary_table(end, bins);
     write_text(out_ / "summary.json", to_json(summary));
-    fs::remove(out_ / "checkpoint.bin");  // complete: nothing to resume
+    // Complete: nothing to resume. After an error the last good checkpoint stays (resume it
+    // with --force after changing what caused the error, e.g. a smaller time step).
+    if (error_.empty()) fs::remove(out_ / "checkpoint.bin");
     if (!error_.empty()) {
       fmt::print(stderr, "simulation error: {}\n", error_);
       if (o_.report) report_command(out_.string(), true);

@@ -76,6 +76,20 @@ PY
 cmp -s "$work/run/outlet.csv" "$work/plain/outlet.csv" || bad "probes changed outlet.csv"
 [ ! -e "$work/plain/report.html" ] && [ ! -e "$work/plain/probe_level.csv" ] || bad "--no-report / probes.every = 0 not honoured"
 
+# A guard trips in the middle of the discharge (issue 5: particles fall far below the outlet, faster
+# than the bound, which the fill never reaches): exit 3, a diagnostic, the outputs so far
+# and the last good checkpoint kept, summary.json marked incomplete.
+"$bin" run "$case" --out "$work/guard" --no-report --set simulation.max_speed=2 --set discharge.sink_depth_mm=1000 \
+  --set simulation.checkpoint_interval=0.02 > /dev/null 2> "$work/guard.err"
+[ $? -eq 3 ] || bad "speed guard: expected exit 3"
+grep -q "speed guard at step .* particle .* above the bound 2 m/s; likely cause" "$work/guard.err" \
+  || bad "speed guard message: $(cat "$work/guard.err")"
+for f in fill.csv outlet.csv checkpoint.bin probe_level.csv summary.json; do
+  [ -s "$work/guard/$f" ] || bad "speed guard: $f not kept"
+done
+grep -q '"complete" : false' "$work/guard/summary.json" && grep -q 'speed guard' "$work/guard/summary.json" \
+  || bad "speed guard: summary.json not marked incomplete with the error"
+
 # A dry run of the same case, then `compare` overlays both (issue 4, Fig. 7 style).
 "$bin" run "$case" --out "$work/dry" --set contact.particle_particle.cohesion.law=none \
   --set contact.particle_wall.cohesion.law=none > /dev/null 2> "$work/dry.err" || bad "dry run exited $?: $(tail -3 "$work/dry.err")"
