@@ -48,6 +48,7 @@ fs::path prepare_out(const RunOptions& o, const Case& c, const CaseReport& repor
                                  o.out_dir));
   fs::create_directories(out);
   fs::copy_file(o.case_path, out / "case.toml", fs::copy_options::overwrite_existing);
+  write_text(out / "case_source.txt", fs::absolute(o.case_path).string());
   std::string overrides;
   for (const auto& s : o.overrides) overrides += s + "\n";
   if (!overrides.empty()) write_text(out / "overrides.txt", overrides);

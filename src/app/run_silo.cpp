@@ -28,23 +28,28 @@ namespace {
 
 // ---- signals ----------------------------------------------------------------------------------
 
-volatile std::sig_atomic_t g_signal = 0;
+// Set by the handler, read by the time loop (which may run on another thread than the one the
+// signal interrupts): a lock-free atomic is both async-signal-safe and race-free.
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 
 extern "C" void on_signal(int sig) {
-  g_signal = sig;
+  g_signal.store(sig);
   std::signal(sig, SIG_DFL);  // a second signal ends the program at once
+}
+
+void default_signals() {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
 }
 
 struct SignalGuard {
   SignalGuard() {
-    g_signal = 0;
+    g_signal.store(0);
     std::signal(SIGINT, on_signal);
     std::signal(SIGTERM, on_signal);
   }
-  ~SignalGuard() {
-    std::signal(SIGINT, SIG_DFL);
-    std::signal(SIGTERM, SIG_DFL);
-  }
+  ~SignalGuard() { default_signals(); }
 };
 
 struct InterruptedFill {};
@@ -135,11 +140,12 @@ class SiloRun {
   // A new run into an empty DIR: fill, then discharge.
   int start(const fs::path& out) {
     out_ = out;
+    case_hash_ = case_hash(out_);  // the case as started (an edit during the run is a change)
     write_summary_running();
     Random rng(c_.time.seed);
     try {
       fill_ = fill_silo(*sim_, c_, report_.segment_coal, rng, [&](const std::string& s) {
-        if (g_signal) throw InterruptedFill{};
+        if (g_signal.load()) throw InterruptedFill{};
         progress_.show(fmt::format("fill {}  particles {}  wall {:.0f} s", s,
                                    sim_->particles().size(), wall()));
       });
@@ -170,8 +176,9 @@ class SiloRun {
   }
 
   // Continue an interrupted or killed run from DIR/checkpoint.bin.
-  int resume(const fs::path& out, ByteReader& r) {
+  int resume(const fs::path& out, ByteReader& r, std::uint64_t hash) {
     out_ = out;
+    case_hash_ = hash;
     r.tag("FILL");
     r.get(wall_before_);
     r.get(fill_.particles), r.get(fill_.mass), r.get(fill_.settle_time);
@@ -194,7 +201,7 @@ class SiloRun {
 
   void checkpoint() {
     ByteWriter w;
-    w.put(case_hash(out_));
+    w.put(case_hash_);
     w.put(std::int32_t(sim_->settings().threads));
     w.tag("FILL");
     w.put(wall());
@@ -211,24 +218,32 @@ class SiloRun {
   int discharge() {
     const double t_wall0 = wall();
     DischargeControl control;
-    control.stop = [] { return g_signal != 0; };
+    control.stop = [] { return g_signal.load() != 0; };
     control.checkpoint = [this] { checkpoint(); };
     control.checkpoint_interval = c_.time.checkpoint_interval;
-    dis_result_ = dis_->run(
-        [&](const DischargeState& s) {
-          const double frac = s.discharged / std::max(s.filled, 1e-30);
-          progress_.show(fmt::format(
-              "discharge t = {:.2f} s  particles left {}  out {:.3f} kg ({:.1f}%)  "
-              "rate {:.3f} kg/s  wall {:.0f} s  ETA {}",
-              s.t, s.particles_left, s.discharged, 100 * frac, s.recent_rate, wall(),
-              frac > 0.01 ? fmt::format("{:.0f} s", (wall() - t_wall0) * (1 / frac - 1)) : "?"));
-        },
-        control);
+    try {
+      dis_result_ = dis_->run(
+          [&](const DischargeState& s) {
+            const double frac = s.discharged / std::max(s.filled, 1e-30);
+            progress_.show(fmt::format(
+                "discharge t = {:.2f} s  particles left {}  out {:.3f} kg ({:.1f}%)  "
+                "rate {:.3f} kg/s  wall {:.0f} s  ETA {}",
+                s.t, s.particles_left, s.discharged, 100 * frac, s.recent_rate, wall(),
+                frac > 0.01 ? fmt::format("{:.0f} s", (wall() - t_wall0) * (1 / frac - 1)) : "?"));
+          },
+          control);
+    } catch (const std::exception& e) {  // writing a probe row, a frame or a checkpoint failed
+      progress_.finish();
+      error_ = fmt::format("output failed during the discharge: {}", e.what());
+      write_summary("error during the discharge (output)");
+      fmt::print(stderr, "error: {} (the last checkpoint is kept: fix it and resume)\n", error_);
+      return 1;
+    }
     progress_.finish();
     const DischargeResult& d = dis_result_;
     if (d.end == DischargeEnd::Interrupted) {
       checkpoint();
-      error_ = fmt::format("interrupted by signal {} at t = {:.3f} s", int(g_signal), d.end_time);
+      error_ = fmt::format("interrupted by signal {} at t = {:.3f} s", g_signal.load(), d.end_time);
       write_summary("interrupted");
       fmt::print(stderr,
                  "interrupted at t = {:.3f} s of discharge; checkpoint written; continue with: "
@@ -264,6 +279,7 @@ class SiloRun {
     if (error_.empty()) fs::remove(out_ / "checkpoint.bin");
     if (!error_.empty()) {
       fmt::print(stderr, "simulation error: {}\n", error_);
+      default_signals();
       if (o_.report) report_command(out_.string(), true);
       return kExitSimulation;
     }
@@ -273,6 +289,7 @@ class SiloRun {
         end, d.discharged_mass, d.filled_mass, d.discharge_time,
         d.discharge_time > 0 ? d.discharged_mass / d.discharge_time : 0.0, d.remaining_mass,
         d.lost_mass, out_.string());
+    default_signals();  // the run is complete: Ctrl-C during the report just stops the report
     if (o_.report) report_command(out_.string(), true);
     // A stopped flow is a result, not a success: the silo did not empty.
     return d.end == DischargeEnd::Emptied ? kExitOk : kExitNotEmptied;
@@ -284,8 +301,7 @@ class SiloRun {
                   {"end", "running"},
                   {"title", c_.title},
                   {"case", o_.case_path},
-                  {"scenario", c_.fill.scenario},
-                  {"resume", fmt::format("silodem run --resume {}", out_.string())}};
+                  {"scenario", c_.fill.scenario}};
     write_text(out_ / "summary.json", to_json(s));
   }
 
@@ -367,6 +383,7 @@ class SiloRun {
   std::string error_;
   ProgressLine progress_;
   double wall_before_ = 0.0;
+  std::uint64_t case_hash_ = 0;
 };
 
 }  // namespace
@@ -402,7 +419,10 @@ int resume_silo(const RunOptions& o) {
   RunOptions opts = o;
   opts.case_path = (out / "case.toml").string();
   opts.overrides = overrides_in(out);
-  const Case c = config::load_case_file(opts.case_path, opts.overrides);
+  // Relative paths in the case (measured data) are relative to where the case file was.
+  const std::string source = read_text(out / "case_source.txt");
+  const Case c = config::load_case_file(opts.case_path, opts.overrides,
+                                        fs::path(source).parent_path().string());
   if (!c.silo.present) throw InputError({}, "--resume", "only silo runs are resumable");
   ContactModel model;
   const CaseReport report = derive_case(c, &model);
@@ -413,7 +433,7 @@ int resume_silo(const RunOptions& o) {
                o.threads, threads);
   SiloRun run(opts, c, report, std::move(model), o.threads > 0 ? o.threads : threads);
   SignalGuard signals;
-  return run.resume(out, r);
+  return run.resume(out, r, hash);
 }
 
 }  // namespace silodem::app

@@ -277,7 +277,7 @@ ContactTally Simulation::contact_tally() const {
     for (int e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e) {
       const Wall& w = *walls_[list_.wall[e]];
       WallHit hit;
-      if (!w.near(p_.x[i], reach, hit)) continue;
+      if (!w.enabled || !w.near(p_.x[i], reach, hit)) continue;  // (the list may be stale)
       ContactState copy = list_.wall_state[e];
       const ContactResult r =
           evaluate_contact(wl, wall_geometry(bi, hit.n, hit.distance, w.velocity()), copy, s_.dt);

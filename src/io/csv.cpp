@@ -2,6 +2,7 @@
 #include "io/csv.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -23,6 +24,10 @@ CsvWriter::CsvWriter(std::string path, std::size_t ncol, std::uint64_t bytes)
     : path_(std::move(path)), ncol_(ncol) {
   const std::string partial = path_ + ".partial";
   std::error_code ec;
+  // Finished already (the run stopped with an error after its last checkpoint, or was killed
+  // while finishing): continue from the checkpoint's length all the same.
+  if (!std::filesystem::exists(partial) && std::filesystem::exists(path_))
+    std::filesystem::rename(path_, partial);
   if (!std::filesystem::exists(partial) || std::filesystem::file_size(partial, ec) < bytes)
     throw std::runtime_error(
         fmt::format("cannot resume {}: it is missing or shorter than at the checkpoint ({} bytes)",
@@ -35,7 +40,8 @@ CsvWriter::CsvWriter(std::string path, std::size_t ncol, std::uint64_t bytes)
 
 std::uint64_t CsvWriter::flush() {
   if (!f_) return 0;
-  if (std::fflush(f_) != 0) throw std::runtime_error("cannot write " + path_ + ".partial");
+  if (std::fflush(f_) != 0 || ::fsync(fileno(f_)) != 0)
+    throw std::runtime_error("cannot write " + path_ + ".partial");
   return std::uint64_t(std::ftell(f_));
 }
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -29,6 +30,11 @@ std::vector<std::string> split(const std::string& line) {
 
 MeasuredData load_measured_csv(const std::string& path, const SourcePlace& from) {
   const char* key = "output.measured";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw InputError(from, key, fmt::format("= \"{}\": not a readable file", path));
+  if (std::filesystem::file_size(path, ec) > (std::uintmax_t(64) << 20))
+    throw InputError(from, key, fmt::format("= \"{}\": larger than 64 MiB", path));
   std::ifstream in(path);
   if (!in) throw InputError(from, key, fmt::format("= \"{}\": cannot open the file", path));
   std::string line;

@@ -141,7 +141,11 @@ void Discharge::save(ByteWriter& w) const {
   std::vector<double> times;
   for (const auto& [id, t] : crossed_) ids.push_back(id), times.push_back(t);
   w.put(ids), w.put(times);
-  w.put(r_.outflow);
+  std::vector<double> out_t, out_m;
+  std::vector<int> out_c;
+  for (const auto& o : r_.outflow)
+    out_t.push_back(o.t), out_c.push_back(o.coal), out_m.push_back(o.mass);
+  w.put(out_t), w.put(out_c), w.put(out_m);
   w.put(r_.filled_mass), w.put(r_.discharged_mass), w.put(r_.lost_mass);
   w.put(r_.particles_filled), w.put(r_.particles_lost);
 }
@@ -156,7 +160,14 @@ void Discharge::load(ByteReader& rd) {
   if (ids.size() != times.size()) throw std::runtime_error("checkpoint: discharge records differ");
   crossed_.clear();
   for (std::size_t k = 0; k < ids.size(); ++k) crossed_[ids[k]] = times[k];
-  rd.get(r_.outflow);
+  std::vector<double> out_t, out_m;
+  std::vector<int> out_c;
+  rd.get(out_t), rd.get(out_c), rd.get(out_m);
+  if (out_c.size() != out_t.size() || out_m.size() != out_t.size())
+    throw std::runtime_error("checkpoint: outflow records differ");
+  r_.outflow.clear();
+  for (std::size_t k = 0; k < out_t.size(); ++k)
+    r_.outflow.push_back({out_t[k], out_c[k], out_m[k]});
   rd.get(r_.filled_mass), rd.get(r_.discharged_mass), rd.get(r_.lost_mass);
   rd.get(r_.particles_filled), rd.get(r_.particles_lost);
 }

@@ -35,7 +35,9 @@ SiloWalls make_silo_walls(const SiloGeometry& g) {
   SiloWalls s;
   const Meridian rim{g.outlet_radius(), 0.0}, joint{g.top_radius(), g.cone_height},
       top{g.top_radius(), g.total_height()};
-  s.walls.push_back(std::make_unique<FrustumFace>(0.0, 0.0, rim, joint, true));
+  auto cone = std::make_unique<FrustumFace>(0.0, 0.0, rim, joint, true);
+  cone->free_ends(true, false);  // the rim is a free edge, the joint is not
+  s.walls.push_back(std::move(cone));
   if (g.cylinder_height > 0.0)  // no cylinder: no zero-length face
     s.walls.push_back(std::make_unique<FrustumFace>(0.0, 0.0, joint, top, true));
   // The rim is a convex edge seen from the outlet: it acts where the cone face does not, i.e.

@@ -89,6 +89,13 @@ for f in fill.csv outlet.csv checkpoint.bin probe_level.csv summary.json; do
 done
 grep -q '"complete" : false' "$work/guard/summary.json" && grep -q 'speed guard' "$work/guard/summary.json" \
   || bad "speed guard: summary.json not marked incomplete with the error"
+# Remove the cause and continue from the last good checkpoint (--force: the case changed).
+grep -v max_speed "$work/guard/overrides.txt" > "$work/guard/o.txt" && mv "$work/guard/o.txt" "$work/guard/overrides.txt"
+"$bin" run --resume "$work/guard" --no-report > /dev/null 2>&1
+[ $? -eq 2 ] || bad "resume of a changed case without --force: expected exit 2"
+"$bin" run --resume "$work/guard" --force --no-report > /dev/null 2> "$work/guard2.err" \
+  || bad "resume after the guard (--force) exited $?: $(tail -2 "$work/guard2.err")"
+grep -q '"complete" : true' "$work/guard/summary.json" || bad "resumed guard run not complete"
 
 # A dry run of the same case, then `compare` overlays both (issue 4, Fig. 7 style).
 "$bin" run "$case" --out "$work/dry" --set contact.particle_particle.cohesion.law=none \

@@ -39,9 +39,9 @@ bool FrustumFace::near(const Vec3& c, double limit, WallHit& hit) const {
   const double dist = mr * nr_ + mz * nz_;
   // One-sided: a centre more than `limit` behind the surface is not in contact (it escaped).
   if (dist >= limit || dist < -limit) return false;
-  // A centre behind the surface near an end came round the end (e.g. a particle below the
+  // A centre behind the surface near a free end came round the end (e.g. a particle below the
   // outlet, outside it), not through the face: the edge there acts, not this thin face's back.
-  if (dist < 0.0 && (t < -dist || t > len_ + dist)) return false;
+  if (dist < 0.0 && ((free_a_ && t < -dist) || (free_b_ && t > len_ + dist))) return false;
   hit.n = {nr_ * ex, nr_ * ey, nz_};
   hit.distance = dist;
   return true;

@@ -19,6 +19,13 @@ class FrustumFace final : public Wall {
  public:
   // `inner`: particles are on the axis side of the surface (inside a silo).
   FrustumFace(double cx, double cy, Meridian a, Meridian b, bool inner);
+  // Ends that are free edges (the outlet rim), not joints with another face: a centre behind the
+  // face near a free end came round the edge, so the thin face's back does not act there. At a
+  // (concave) joint it must act, or a hard-pressed particle could slip out through the corner.
+  FrustumFace& free_ends(bool at_a, bool at_b) {
+    free_a_ = at_a, free_b_ = at_b;
+    return *this;
+  }
   bool near(const Vec3& c, double limit, WallHit& hit) const override;
   bool may_touch(const Vec3& c, double limit) const override;
   std::string describe() const override;
@@ -28,6 +35,7 @@ class FrustumFace final : public Wall {
   Meridian a_;
   double ur_, uz_, len_;  // unit direction a -> b and length
   double nr_, nz_;        // unit normal towards the particle side
+  bool free_a_ = false, free_b_ = false;
 };
 
 class CircleEdge final : public Wall {

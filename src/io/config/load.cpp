@@ -285,7 +285,7 @@ int coal_index(const Case& c, const ParamValues& v, const std::string& key) {
                        hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
 }
 
-Case build(const toml::table& root, const std::string& file) {
+Case build(const toml::table& root, const std::string& file, const std::string& base_dir) {
   Reader r{file};
   Case c;
   c.path = file;
@@ -594,7 +594,9 @@ Case build(const toml::table& root, const std::string& file) {
       throw v.error("vtk_interval", "ParaView frames are written by silo runs only");
     if (const std::string& m = v.string("measured"); !m.empty()) {
       if (!c.silo.present) throw v.error("measured", "measured outlet data needs a silo case");
-      const std::filesystem::path base = std::filesystem::path(file).parent_path();
+      const std::filesystem::path base = base_dir.empty()
+                                             ? std::filesystem::path(file).parent_path()
+                                             : std::filesystem::path(base_dir);
       const std::filesystem::path mp =
           std::filesystem::path(m).is_absolute() ? std::filesystem::path(m) : base / m;
       c.output.measured = mp.string();
@@ -655,11 +657,11 @@ void apply_override(toml::table& root, const std::string& item) {
 }
 
 Case parse(const std::string& text, const std::string& name,
-           const std::vector<std::string>& overrides = {}) {
+           const std::vector<std::string>& overrides = {}, const std::string& base_dir = {}) {
   try {
     toml::table root = toml::parse(text, name);
     for (const auto& o : overrides) apply_override(root, o);
-    return build(root, name);
+    return build(root, name, base_dir);
   } catch (const toml::parse_error& e) {
     const auto& s = e.source();
     throw InputError({name, int(s.begin.line), int(s.begin.column)}, "",
@@ -671,12 +673,13 @@ Case parse(const std::string& text, const std::string& name,
 
 }  // namespace
 
-Case load_case_file(const std::string& path, const std::vector<std::string>& overrides) {
+Case load_case_file(const std::string& path, const std::vector<std::string>& overrides,
+                    const std::string& base_dir) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError({path, 0, 0}, "", "cannot open the case file");
   std::ostringstream ss;
   ss << in.rdbuf();
-  return parse(ss.str(), path, overrides);
+  return parse(ss.str(), path, overrides, base_dir);
 }
 
 Case load_case_text(const std::string& text, const std::string& name) {

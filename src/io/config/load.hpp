@@ -9,8 +9,10 @@
 
 namespace silodem::config {
 
-// `overrides`: "key=value" items (--set), applied before validation.
-Case load_case_file(const std::string& path, const std::vector<std::string>& overrides = {});
+// `overrides`: "key=value" items (--set), applied before validation. Relative paths in the case
+// (`[output] measured`) are resolved against `base_dir`, by default the case file's folder.
+Case load_case_file(const std::string& path, const std::vector<std::string>& overrides = {},
+                    const std::string& base_dir = {});
 // `name` is used in error messages in place of a path.
 Case load_case_text(const std::string& text, const std::string& name);
 
