@@ -143,7 +143,11 @@ def case_title(summary, run_dir=""):
     if not title:
         title = os.path.basename(os.path.normpath(run_dir)) or "silodem run"
     scenario = str(summary.get("scenario") or "").strip()
-    return title + ", " + scenario if scenario and scenario not in title else title
+    title = title + ", " + scenario if scenario and scenario not in title else title
+    k = summary.get("k")
+    if isinstance(k, (int, float)) and "k = {:g}".format(k) not in title:
+        title += " (run at k = {:g})".format(k)  # e.g. --set coarse_graining.k=4
+    return title
 
 
 def coal_list(summary):

@@ -313,7 +313,7 @@ class CompareTest(ToolTestCase):
             self.assertIn('src="{}"'.format(name), html_text)
         # identical default labels get the directory name appended
         for i in range(3):
-            self.assertIn("Case, L3-I2 (r{})".format(i), html_text)
+            self.assertIn("Case, L3-I2 (run at k = 4) (r{})".format(i), html_text)
         for number in ("31.38", "2.16", "8", "0.27"):
             self.assertIn(number, html_text)
         self.assertLabelsHaveUnits(label_records(p.stdout), COMPARE_FIGURES)
