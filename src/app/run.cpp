@@ -11,6 +11,7 @@
 #include "app/commands.hpp"
 #include "app/progress.hpp"
 #include "app/run_common.hpp"
+#include "io/atomic_file.hpp"
 #include "io/config/load.hpp"
 #include "io/csv.hpp"
 #include "io/report_json.hpp"
@@ -24,13 +25,7 @@ namespace fs = std::filesystem;
 
 namespace silodem::app {
 void write_text(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".partial";
-  {
-    std::ofstream o(tmp, std::ios::binary);
-    o << text;
-    if (!o) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, path);
+  write_atomically(path.string(), {text}, false);
 }
 
 std::string to_json(const toml::table& t) {

@@ -1,10 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "io/checkpoint.hpp"
 
-#include <fcntl.h>
+#include "io/atomic_file.hpp"
+
 #include <fmt/format.h>
-#include <unistd.h>
-#include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -17,45 +16,17 @@ namespace {
 constexpr char kMagic[8] = {'S', 'I', 'L', 'O', 'C', 'K', 'P', 'T'};
 constexpr std::uint32_t kVersion = 1;
 
-void write_all(int fd, const void* data, std::size_t n, const std::string& path) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  while (n > 0) {
-    const ssize_t k = ::write(fd, p, n);
-    if (k < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error(fmt::format("cannot write {}: {}", path, std::strerror(errno)));
-    }
-    p += k, n -= std::size_t(k);
-  }
-}
-
 }  // namespace
 
 void write_checkpoint(const std::string& path, const ByteWriter& body) {
-  const std::string tmp = path + ".partial";
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0)
-    throw std::runtime_error(fmt::format("cannot write {}: {}", tmp, std::strerror(errno)));
-  try {
-    write_all(fd, kMagic, sizeof kMagic, tmp);
-    write_all(fd, &kVersion, sizeof kVersion, tmp);
-    const std::uint64_t n = body.bytes().size();
-    write_all(fd, &n, sizeof n, tmp);
-    write_all(fd, body.bytes().data(), body.bytes().size(), tmp);
-    if (::fsync(fd) != 0)
-      throw std::runtime_error(fmt::format("cannot sync {}: {}", tmp, std::strerror(errno)));
-  } catch (...) {
-    ::close(fd);
-    throw;
-  }
-  ::close(fd);
-  std::filesystem::rename(tmp, path);
-  const std::string dir = std::filesystem::path(path).parent_path().string();
-  const int dfd = ::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (dfd >= 0) {
-    ::fsync(dfd);  // the rename itself is durable
-    ::close(dfd);
-  }
+  const std::uint64_t n = body.bytes().size();
+  auto view = [](const void* p, std::size_t size) {
+    return std::string_view(static_cast<const char*>(p), size);
+  };
+  write_atomically(path,
+                   {view(kMagic, sizeof kMagic), view(&kVersion, sizeof kVersion),
+                    view(&n, sizeof n), view(body.bytes().data(), body.bytes().size())},
+                   true);
 }
 
 ByteReader read_checkpoint(const std::string& path) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "io/vtk.hpp"
 
+#include "io/atomic_file.hpp"
+
 #include <fmt/format.h>
 #include <bit>
 #include <cmath>
@@ -20,10 +22,6 @@ std::vector<unsigned char> bytes_of(const std::vector<T>& v) {
   std::vector<unsigned char> b(v.size() * sizeof(T));
   if (!v.empty()) std::memcpy(b.data(), v.data(), b.size());
   return b;
-}
-
-void commit(const std::string& tmp, const std::string& path) {
-  std::filesystem::rename(tmp, path);
 }
 
 }  // namespace
@@ -108,20 +106,16 @@ void VtpWriter::write(const std::string& path) const {
       "  <AppendedData encoding=\"raw\">\n   _",
       offset[a], verts_ ? "Verts" : "Polys", offset[a + 1], offset[a + 2],
       verts_ ? "Verts" : "Polys");
-  const std::string tmp = path + ".partial";
-  {
-    std::ofstream o(tmp, std::ios::binary);
-    o.write(xml.data(), std::streamsize(xml.size()));
-    for (const auto* b : blocks) {
-      const std::uint64_t len = b->size();
-      o.write(reinterpret_cast<const char*>(&len), sizeof len);
-      o.write(reinterpret_cast<const char*>(b->data()), std::streamsize(b->size()));
-    }
-    const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
-    o.write(tail.data(), std::streamsize(tail.size()));
-    if (!o) throw std::runtime_error("cannot write " + tmp);
+  std::vector<std::uint64_t> lengths;
+  for (const auto* b : blocks) lengths.push_back(b->size());
+  static const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
+  std::vector<std::string_view> parts = {xml};
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    parts.emplace_back(reinterpret_cast<const char*>(&lengths[k]), sizeof(std::uint64_t));
+    parts.emplace_back(reinterpret_cast<const char*>(blocks[k]->data()), blocks[k]->size());
   }
-  commit(tmp, path);
+  parts.emplace_back(tail);
+  write_atomically(path, parts, false);
 }
 
 void write_particles_vtp(const std::string& path, const Simulation& sim, const ContactTally& t) {
@@ -191,13 +185,7 @@ void PvdCollection::write() const {
     xml +=
         fmt::format("    <DataSet timestep=\"{:.9g}\" group=\"\" part=\"0\" file=\"{}\"/>\n", t, f);
   xml += "  </Collection>\n</VTKFile>\n";
-  const std::string tmp = path_ + ".partial";
-  {
-    std::ofstream o(tmp, std::ios::binary);
-    o << xml;
-    if (!o) throw std::runtime_error("cannot write " + tmp);
-  }
-  commit(tmp, path_);
+  write_atomically(path_, {xml}, false);
 }
 
 }  // namespace silodem
