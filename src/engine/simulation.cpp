@@ -9,6 +9,8 @@
 #include <omp.h>
 #endif
 
+#include "model/contact/dispatch.hpp"
+
 namespace silodem {
 namespace {
 
@@ -22,7 +24,9 @@ int thread_count(int requested) {
 }
 
 BodyState body(const ParticleStore& p, std::size_t i) {
-  return {p.x[i], p.v[i], p.omega[i], p.radius[i], p.mass[i], 1.0 / p.inv_inertia[i]};
+  // (1 / inv_inertia is computed only where a law reads the inertia itself: see dispatch.hpp.)
+  return {p.x[i],          p.v[i], p.omega[i], p.radius[i], p.mass[i], 1.0 / p.inv_inertia[i],
+          p.inv_inertia[i]};
 }
 
 }  // namespace
@@ -105,11 +109,78 @@ void Simulation::run_until(double t_end) {
   while (time_ + 0.5 * s_.dt < t_end) step();
 }
 
+// Every coal pair uses the same laws (one [contact.particle_particle] section; only parameters
+// differ), so the kernels chosen for pair (0, 0) serve all pairs; likewise for the walls.
+template <class K>
+void Simulation::pair_forces(int tid, double guard) {
+  const std::size_t n = p_.size();
+  const double dt = s_.dt;
+  auto& fb = f_buf_[std::size_t(tid)];
+  auto& tb = t_buf_[std::size_t(tid)];
+  // The buffers are summed in thread order afterwards, so a run is bitwise reproducible for a
+  // given thread count.
+#pragma omp for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const int mi = p_.material[i];
+    const BodyState bi = body(p_, i);
+    for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
+      const int j = list_.partner[e];
+      const ContactLaw& law = model_.pair(mi, p_.material[j]);
+      const double sum_r = bi.radius + p_.radius[j];
+      const double reach = sum_r * (1.0 + law.cp.reach_over_d);
+      const double d2 = norm2(bi.x - p_.x[j]);
+      ContactState& st = list_.state[e];
+      if (d2 >= reach * reach) {
+        st = ContactState{};
+        continue;
+      }
+      const ContactGeometry g = pair_geometry(bi, body(p_, j));
+      if (g.overlap > guard * std::min(bi.radius, p_.radius[j]) && flags_[tid].i < 0)
+        flags_[tid] = {long(i), long(j), g.overlap};
+      const ContactResult r = evaluate<K>(law, g, st, dt);
+      fb[i] += r.force_i;
+      fb[j] -= r.force_i;
+      tb[i] += r.torque_i;
+      tb[j] += r.torque_j;
+    }
+  }
+}
+
+// Walls: each particle belongs to one thread, which writes into its own buffers too.
+template <class K>
+void Simulation::wall_forces(int tid, double guard) {
+  const std::size_t n = p_.size();
+  const double dt = s_.dt;
+  auto& fb = f_buf_[std::size_t(tid)];
+  auto& tb = t_buf_[std::size_t(tid)];
+#pragma omp for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (list_.wall_offset[i] == list_.wall_offset[i + 1]) continue;
+    const ContactLaw& law = model_.wall(p_.material[i]);
+    const double reach = p_.radius[i] * (1.0 + 2.0 * law.cp.reach_over_d);
+    const BodyState bi = body(p_, i);
+    for (int e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e) {
+      const Wall& w = *walls_[list_.wall[e]];
+      ContactState& st = list_.wall_state[e];
+      WallHit hit;
+      if (!w.near(p_.x[i], reach, hit)) {
+        st = ContactState{};
+        continue;
+      }
+      const ContactGeometry g = wall_geometry(bi, hit.n, hit.distance, w.velocity());
+      if (g.overlap > guard * p_.radius[i] && flags_[tid].i < 0)
+        flags_[tid] = {long(i), -1 - long(list_.wall[e]), g.overlap};
+      const ContactResult r = evaluate<K>(law, g, st, dt);
+      fb[i] += r.force_i;
+      tb[i] += r.torque_i;
+    }
+  }
+}
+
 void Simulation::compute_forces() {
   const std::size_t n = p_.size();
   // Small systems run on one thread: a parallel region costs more than it saves there.
   const int nt = n < 512 ? 1 : s_.threads;
-  const double dt = s_.dt;
   if (int(f_buf_.size()) < nt) {
     f_buf_.resize(std::size_t(nt));
     t_buf_.resize(std::size_t(nt));
@@ -130,54 +201,9 @@ void Simulation::compute_forces() {
     auto& tb = t_buf_[tid];
     fb.assign(n, Vec3{});
     tb.assign(n, Vec3{});
-    // Pair contacts (half list). Each thread accumulates into its own buffer; the buffers are
-    // summed in thread order below, so a run is bitwise reproducible for a given thread count.
-#pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      const int mi = p_.material[i];
-      const BodyState bi = body(p_, i);
-      for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
-        const int j = list_.partner[e];
-        const ContactLaw& law = model_.pair(mi, p_.material[j]);
-        const double sum_r = p_.radius[i] + p_.radius[j];
-        const double reach = sum_r * (1.0 + law.cp.reach_over_d);
-        const double d2 = norm2(p_.x[i] - p_.x[j]);
-        ContactState& st = list_.state[e];
-        if (d2 >= reach * reach) {
-          st = ContactState{};
-          continue;
-        }
-        const ContactGeometry g = pair_geometry(bi, body(p_, j));
-        if (g.overlap > guard * std::min(p_.radius[i], p_.radius[j]) && flags_[tid].i < 0)
-          flags_[tid] = {long(i), long(j), g.overlap};
-        const ContactResult r = evaluate_contact(law, g, st, dt);
-        fb[i] += r.force_i;
-        fb[j] -= r.force_i;
-        tb[i] += r.torque_i;
-        tb[j] += r.torque_j;
-      }
-    }
-    // Walls: each particle belongs to one thread, so write into its own buffer too.
-#pragma omp for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) {
-      const ContactLaw& law = model_.wall(p_.material[i]);
-      const double reach = p_.radius[i] * (1.0 + 2.0 * law.cp.reach_over_d);
-      for (int e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e) {
-        const Wall& w = *walls_[list_.wall[e]];
-        ContactState& st = list_.wall_state[e];
-        WallHit hit;
-        if (!w.near(p_.x[i], reach, hit)) {
-          st = ContactState{};
-          continue;
-        }
-        const ContactGeometry g = wall_geometry(body(p_, i), hit.n, hit.distance, w.velocity());
-        if (g.overlap > guard * p_.radius[i] && flags_[tid].i < 0)
-          flags_[tid] = {long(i), -1 - long(list_.wall[e]), g.overlap};
-        const ContactResult r = evaluate_contact(law, g, st, dt);
-        fb[i] += r.force_i;
-        tb[i] += r.torque_i;
-      }
-    }
+    // Pair contacts (half list), then walls; each thread accumulates into its own buffers.
+    with_kernels(model_.pair(0, 0), [&](auto k) { pair_forces<decltype(k)>(tid, guard); });
+    with_kernels(model_.wall(0), [&](auto k) { wall_forces<decltype(k)>(tid, guard); });
     // Reduce: gravity + external force + the per-thread buffers in fixed order.
 #pragma omp for schedule(static)
     for (std::size_t i = 0; i < n; ++i) {

@@ -87,6 +87,12 @@ class Simulation {
 
  private:
   void compute_forces();
+  // The two halves of compute_forces' parallel region, compiled per law combination
+  // (model/contact/dispatch.hpp); orphaned `omp for` loops.
+  template <class K>
+  void pair_forces(int tid, double guard);
+  template <class K>
+  void wall_forces(int tid, double guard);
   void update_neighbors();
   void run_hooks(Phase ph);
   void check_state() const;

@@ -16,11 +16,12 @@ struct ContactGeometry {
   double m_eff = 0.0;           // m_i m_j / (m_i + m_j); m_i against a wall (E5)
   double d_i = 0.0, d_j = 0.0;  // diameters (d_j = 0 for a wall)
   double d_ref = 0.0;           // length that scales cohesion ranges: mean diameter; d_i at a wall
-  double inertia_i = 0.0, inertia_j = 0.0;  // moments of inertia (0 for a wall)
-  double mass_i = 0.0, mass_j = 0.0;        // masses (0 for a wall)
-  Vec3 v_rel;                               // velocity of i's contact point relative to j's
-  double overlap_rate = 0.0;                // d(delta_n)/dt = -v_rel . n
-  Vec3 v_t;                                 // tangential part of v_rel
+  double inertia_i = 0.0, inertia_j = 0.0;          // moments of inertia (0 for a wall)
+  double inv_inertia_i = 0.0, inv_inertia_j = 0.0;  // their inverses (0 for a wall)
+  double mass_i = 0.0, mass_j = 0.0;                // masses (0 for a wall)
+  Vec3 v_rel;                                       // velocity of i's contact point relative to j's
+  double overlap_rate = 0.0;                        // d(delta_n)/dt = -v_rel . n
+  Vec3 v_t;                                         // tangential part of v_rel
   Vec3 omega_i, omega_j;  // angular velocities (omega_j = wall's, zero for fixed walls)
 };
 
@@ -35,14 +36,69 @@ inline double rolling_inertia(const ContactGeometry& g) {
 
 struct BodyState {
   Vec3 x, v, omega;
-  double radius = 0.0, mass = 0.0, inertia = 0.0;
+  double radius = 0.0, mass = 0.0, inertia = 0.0, inv_inertia = 0.0;
 };
 
-// Particle i against particle j (centres closer than R_i + R_j + some reach; dist > 0).
-ContactGeometry pair_geometry(const BodyState& i, const BodyState& j);
+namespace detail {
+inline void finish_kinematics(ContactGeometry& g, const Vec3& v_i, const Vec3& v_j) {
+  // Contact-point velocities: v + omega x r, with r = -arm_i n for i and +arm_j n for j.
+  const Vec3 vc_i = v_i + cross(g.omega_i, -g.arm_i * g.n);
+  const Vec3 vc_j = v_j + cross(g.omega_j, g.arm_j * g.n);
+  g.v_rel = vc_i - vc_j;
+  const double vn = dot(g.v_rel, g.n);
+  g.overlap_rate = -vn;
+  g.v_t = g.v_rel - vn * g.n;
+}
+}  // namespace detail
+
+// Particle i against particle j (centres closer than R_i + R_j + some reach; dist > 0). Inline:
+// in the force loop a field no law reads is never computed.
+inline ContactGeometry pair_geometry(const BodyState& i, const BodyState& j) {
+  ContactGeometry g;
+  const Vec3 d = i.x - j.x;
+  const double dist = norm(d);
+  const double inv_dist = 1.0 / dist;
+  g.n = d * inv_dist;
+  g.overlap = i.radius + j.radius - dist;
+  // Contact point on the radical plane (MFIX DIST_CL / DIST_CI): arm_i^2 - a^2 = R_i^2 ...
+  g.arm_i = 0.5 * dist + 0.5 * (i.radius * i.radius - j.radius * j.radius) * inv_dist;
+  g.arm_j = dist - g.arm_i;
+  g.r_eff = i.radius * j.radius / (i.radius + j.radius);
+  g.m_eff = i.mass * j.mass / (i.mass + j.mass);
+  g.d_i = 2.0 * i.radius;
+  g.d_j = 2.0 * j.radius;
+  g.d_ref = i.radius + j.radius;
+  g.mass_i = i.mass;
+  g.mass_j = j.mass;
+  g.inertia_i = i.inertia;
+  g.inertia_j = j.inertia;
+  g.inv_inertia_i = i.inv_inertia;
+  g.inv_inertia_j = j.inv_inertia;
+  g.omega_i = i.omega;
+  g.omega_j = j.omega;
+  detail::finish_kinematics(g, i.v, j.v);
+  return g;
+}
+
 // Particle i against a wall surface point p with outward normal n (towards the particle side),
 // the wall moving with velocity v_wall. `distance` is the centre-to-surface distance along n.
-ContactGeometry wall_geometry(const BodyState& i, const Vec3& n, double distance,
-                              const Vec3& v_wall);
+inline ContactGeometry wall_geometry(const BodyState& i, const Vec3& n, double distance,
+                                     const Vec3& v_wall) {
+  ContactGeometry g;
+  g.n = n;
+  g.overlap = i.radius - distance;
+  g.arm_i = distance;
+  g.arm_j = 0.0;
+  g.r_eff = i.radius;
+  g.m_eff = i.mass;
+  g.d_i = 2.0 * i.radius;
+  g.d_ref = g.d_i;
+  g.mass_i = i.mass;
+  g.inertia_i = i.inertia;
+  g.inv_inertia_i = i.inv_inertia;
+  g.omega_i = i.omega;
+  detail::finish_kinematics(g, i.v, v_wall);
+  return g;
+}
 
 }  // namespace silodem

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/constants.hpp"
+#include "model/contact/dispatch.hpp"
 
 namespace silodem {
 
@@ -20,6 +21,7 @@ ContactLaw configure_contact_law(const ContactSpec& spec, const LawContext& ctx)
     if (!e) throw choice->values.error("law", "unknown law '" + choice->law + "'");
     e->configure(choice->values, ctx, law);
     law.law_names[static_cast<int>(slot)] = choice->law;
+    law.law_index[static_cast<int>(slot)] = e->index;
   }
   return law;
 }
@@ -66,28 +68,7 @@ double ContactModel::wall_collision_time(int a, double m) const {
 
 ContactResult evaluate_contact(const ContactLaw& law, const ContactGeometry& g, ContactState& s,
                                double dt) {
-  ContactResult r;
-  r.cohesion = law.cohesion(law.cp, g);
-  if (g.overlap <= 0.0) {
-    // Not touching: only a ranged cohesion acts; the contact (and its history) has ended.
-    s = ContactState{};
-    r.force_i = -r.cohesion * g.n;
-    return r;
-  }
-  r.touching = true;
-  const NormalForce fn = law.normal(law.np, g);
-  r.normal = fn.total;
-  const double cap =
-      law.tp.cap_sees_cohesion ? std::max(0.0, fn.total - r.cohesion) : std::fabs(fn.total);
-  const Vec3 ft = law.tangential(law.tp, g, fn.eta, cap, s.tangential, dt);
-  // Torque of the tangential force about each centre: r x F with r = -arm_i n (on i) and
-  // r = +arm_j n with force -F_t (on j); both equal -arm (n x F_t).
-  const Vec3 nxf = cross(g.n, ft);
-  const RollingTorque rt = law.rolling(law.rp, g, law.np, fn, r.cohesion, s.rolling, dt);
-  r.torque_i = -g.arm_i * nxf + rt.on_i;
-  r.torque_j = -g.arm_j * nxf + rt.on_j;
-  r.force_i = (fn.total - r.cohesion) * g.n + ft;
-  return r;
+  return with_kernels(law, [&](auto k) { return evaluate<decltype(k)>(law, g, s, dt); });
 }
 
 }  // namespace silodem

@@ -51,8 +51,8 @@ class ContactModel {
   double max_reach_ = 0.0;
 };
 
-// One contact: all four slots, combined as PHYSICS.md 2-3 say. Clears the history when the
-// surfaces do not touch (history lives as long as the contact).
+// One contact (dispatch.hpp's evaluate<K> for the laws `law` was configured with); the force loop
+// calls evaluate<K> directly.
 ContactResult evaluate_contact(const ContactLaw& law, const ContactGeometry& g, ContactState& s,
                                double dt);
 

@@ -1,36 +1,31 @@
 // SPDX-License-Identifier: MIT
-// THE list of contact laws. To add one: write src/model/contact/<slot>_<name>.cpp defining
-// `LawEntry <slot>_<name>_entry()` (fields, a configure function that checks parameters once,
-// and a pure kernel citing its equation), declare it below, add one line to the table, add a test
-// in tests/unit/model/ and a page in docs/models/.
+// The table of contact laws, built from the lists in laws.hpp.
 #include "model/contact/registry.hpp"
 
-namespace silodem {
+#include "model/contact/laws.hpp"
 
-LawEntry normal_linear_spring_dashpot_entry();
-LawEntry tangential_none_entry();
-LawEntry tangential_linear_history_entry();
-LawEntry rolling_none_entry();
-LawEntry rolling_mfix_entry();
-LawEntry rolling_epsd_entry();
-LawEntry cohesion_none_entry();
-LawEntry cohesion_overlap_only_entry();
-LawEntry cohesion_constant_range_entry();
-LawEntry cohesion_mfix_like_entry();
+namespace silodem {
+namespace {
+
+template <class... Laws>
+void append(std::vector<LawEntry>& table, LawList<Laws...>) {
+  int index = 0;
+  ((table.push_back(
+       {Laws::name, Laws::slot, Laws::summary, &Laws::fields, &Laws::configure, index++})),
+   ...);
+}
+
+}  // namespace
 
 const std::vector<LawEntry>& contact_laws() {
-  static const std::vector<LawEntry> table = {
-      normal_linear_spring_dashpot_entry(),
-      tangential_none_entry(),
-      tangential_linear_history_entry(),
-      rolling_none_entry(),
-      rolling_mfix_entry(),
-      rolling_epsd_entry(),
-      cohesion_none_entry(),
-      cohesion_overlap_only_entry(),
-      cohesion_constant_range_entry(),
-      cohesion_mfix_like_entry(),
-  };
+  static const std::vector<LawEntry> table = [] {
+    std::vector<LawEntry> t;
+    append(t, NormalLaws{});
+    append(t, TangentialLaws{});
+    append(t, RollingLaws{});
+    append(t, CohesionLaws{});
+    return t;
+  }();
   return table;
 }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The table of contact laws (one line per law, in registry.cpp) and what a law must provide.
+// What a contact law provides and the table of laws (built from the lists in laws.hpp).
 #pragma once
 #include <string>
 #include <string_view>
@@ -24,7 +24,8 @@ struct ContactLaw {
   RollingParams rp;
   CohesionKernel cohesion = nullptr;
   CohesionParams cp;
-  std::string law_names[4];  // by Slot, for reports
+  std::string law_names[4];         // by Slot, for reports
+  int law_index[4] = {0, 0, 0, 0};  // by Slot: position of the law in its list (laws.hpp)
 };
 
 // What a law may know when it is configured for one pair kind.
@@ -43,6 +44,7 @@ struct LawEntry {
   std::vector<Field> (*fields)(bool wall);
   // Checks the validated values against each other and fills the slot of `law`.
   void (*configure)(const ParamValues& values, const LawContext& ctx, ContactLaw& law);
+  int index;  // position in its slot's list (laws.hpp); selects the compiled kernel (dispatch.hpp)
 };
 
 const std::vector<LawEntry>& contact_laws();

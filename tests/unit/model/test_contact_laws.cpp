@@ -19,6 +19,7 @@ ContactGeometry geometry(double overlap, double overlap_rate = 0.0, Vec3 v_t = {
   i.radius = j.radius = 5e-3;
   i.mass = j.mass = 1e-3;
   i.inertia = j.inertia = 0.4 * 1e-3 * 25e-6;
+  i.inv_inertia = j.inv_inertia = 1.0 / i.inertia;
   i.x = {2 * 5e-3 - overlap, 0, 0};
   i.v = Vec3{-overlap_rate, 0, 0} + v_t;
   return pair_geometry(i, j);

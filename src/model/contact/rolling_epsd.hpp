@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: MIT
+// Elastic-plastic spring-dashpot rolling resistance (Ai, Chen, Rotter & Ooi 2011, Powder Technol.
+// 206:269, "model type C"; PHYSICS.md 2):
+//   k_r = 2.25 k_n mu_r^2 R_eff^2                         (Ai Eq. 13, after Iwashita & Oda)
+//   M_k <- rotate(M_k) - k_r omega_r dt,  |M_k| <= mu_r R_eff |F_n|   (Ai Eq. 12, 15)
+//   M_d = -eta_r 2 sqrt(I_r k_r) omega_r while |M_k| is below the limit, else 0 (Ai Eq. 17, f = 0)
+// with omega_r the tangential part of omega_i - omega_j. The torque acts on i and (opposite) on j.
+// Unlike constant-torque laws it holds a sphere at rest without creep or chatter.
+#pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "model/contact/contact_history.hpp"
+#include "model/contact/registry.hpp"
+
+namespace silodem {
+struct RollingEpsd {
+  static constexpr Slot slot = Slot::Rolling;
+  static constexpr const char* name = "epsd";
+  static constexpr const char* summary = "elastic-plastic spring-dashpot (Ai et al. 2011 type C)";
+
+  static RollingTorque kernel(const RollingParams& p, const ContactGeometry& g,
+                              const NormalParams& np, const NormalForce& fn, double cohesion,
+                              Vec3& spring, double dt) {
+    const double k_r =
+        p.stiffness_factor * np.stiffness * p.friction * p.friction * g.r_eff * g.r_eff;
+    Vec3 w = g.omega_i - g.omega_j;
+    w -= dot(w, g.n) * g.n;
+    rotate_into_tangent_plane(spring, g.n);
+    spring -= k_r * dt * w;
+    // With the switch: the net compressive force, zero for a bond under tension.
+    const double normal =
+        p.limit_sees_cohesion ? std::max(0.0, fn.total - cohesion) : std::fabs(fn.total);
+    const double limit = p.friction * g.r_eff * normal;
+    const double m = norm(spring);
+    Vec3 torque;
+    if (m >= limit) {
+      spring *= m > 0.0 ? limit / m : 0.0;
+      torque = spring;
+    } else {
+      const double c_r = p.damping_fraction * 2.0 * std::sqrt(rolling_inertia(g) * k_r);
+      torque = spring - c_r * w;
+    }
+    return {torque, -torque};
+  }
+
+  static std::vector<Field> fields(bool) {
+    return {
+        Field::number("friction", "rolling friction coefficient mu_r (limit mu_r R_eff |F_n|)")
+            .needed()
+            .at_least(0)
+            .at_most(10),
+        Field::number("stiffness_factor", "k_r = factor k_n mu_r^2 R_eff^2 (Ai et al. 2011: 2.25)")
+            .with_default(2.25)
+            .above(0)
+            .at_most(100),
+        Field::number("damping_ratio",
+                      "rolling viscous damping as a fraction of critical (Ai: 0.3)")
+            .with_default(0.3)
+            .at_least(0)
+            .at_most(2),
+        Field::flag("limit_sees_cohesion",
+                    "limit torque on the net compressive force max(0, F_n - F_coh) instead of "
+                    "|F_n|",
+                    false),
+    };
+  }
+
+  static void configure(const ParamValues& v, const LawContext&, ContactLaw& law) {
+    law.rp.friction = v.number("friction");
+    law.rp.stiffness_factor = v.number("stiffness_factor");
+    law.rp.damping_fraction = v.number("damping_ratio");
+    law.rp.limit_sees_cohesion = v.flag("limit_sees_cohesion");
+    law.rolling = &kernel;
+  }
+};
+
+}  // namespace silodem
