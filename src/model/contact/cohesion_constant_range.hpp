@@ -3,6 +3,7 @@
 //   F_coh = F_L,cg  for surface gap s < s_c (including overlap), else 0;  s_c = range * d_ref.
 // Pull-off work from equilibrium: F s_c + F^2 / (2 k_n) (test T-C5).
 #pragma once
+#include "core/inline.hpp"
 #include "model/contact/cohesion_common.hpp"
 
 namespace silodem {
@@ -11,7 +12,7 @@ struct CohesionConstantRange {
   static constexpr const char* name = "constant-range";
   static constexpr const char* summary = "F_L,cg up to a gap s_c";
 
-  static double kernel(const CohesionParams& p, const ContactGeometry& g) {
+  SILODEM_HOT static double kernel(const CohesionParams& p, const ContactGeometry& g) {
     return -g.overlap < p.range_over_d * g.d_ref ? p.force : 0.0;
   }
   static std::vector<Field> fields(bool wall) {

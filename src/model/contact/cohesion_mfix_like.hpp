@@ -5,6 +5,7 @@
 //         = F_L,cg (s_in / s)^2    for s_in < s < s_out
 //         = 0                      beyond s_out;   s_in, s_out given / d_ref.
 #pragma once
+#include "core/inline.hpp"
 #include "model/contact/cohesion_common.hpp"
 
 namespace silodem {
@@ -13,7 +14,7 @@ struct CohesionMfixLike {
   static constexpr const char* name = "mfix-like";
   static constexpr const char* summary = "constant to s_in (incl. overlap), 1/s^2 to s_out";
 
-  static double kernel(const CohesionParams& p, const ContactGeometry& g) {
+  SILODEM_HOT static double kernel(const CohesionParams& p, const ContactGeometry& g) {
     const double s = -g.overlap;
     const double s_in = p.inner_over_d * g.d_ref;
     if (s <= s_in) return p.force;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // No cohesion (dry material).
 #pragma once
+#include "core/inline.hpp"
 #include "model/contact/cohesion_common.hpp"
 
 namespace silodem {
@@ -9,7 +10,7 @@ struct CohesionNone {
   static constexpr const char* name = "none";
   static constexpr const char* summary = "dry";
 
-  static double kernel(const CohesionParams&, const ContactGeometry&) { return 0.0; }
+  SILODEM_HOT static double kernel(const CohesionParams&, const ContactGeometry&) { return 0.0; }
   // The common keys (pair_rule, wall_factor, factor) are accepted and have no effect, so that a
   // cohesive case can be switched dry with one `--set ...cohesion.law=none`.
   static std::vector<Field> fields(bool wall) { return cohesion_common_fields(wall); }

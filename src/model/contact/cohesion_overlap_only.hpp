@@ -4,6 +4,7 @@
 // The separation work is F^2 / (2 k_n), so this law gets stickier as the stiffness drops
 // (VERIFICATION.md 1.7); a colliding pair is captured below v_crit = f(e) F / sqrt(k_n m_eff).
 #pragma once
+#include "core/inline.hpp"
 #include "model/contact/cohesion_common.hpp"
 
 namespace silodem {
@@ -12,7 +13,7 @@ struct CohesionOverlapOnly {
   static constexpr const char* name = "overlap-only";
   static constexpr const char* summary = "F_L,cg while overlapping (Eq. 13-14)";
 
-  static double kernel(const CohesionParams& p, const ContactGeometry& g) {
+  SILODEM_HOT static double kernel(const CohesionParams& p, const ContactGeometry& g) {
     return g.overlap > 0.0 ? p.force : 0.0;
   }
   static std::vector<Field> fields(bool wall) { return cohesion_common_fields(wall); }

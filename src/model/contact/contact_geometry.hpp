@@ -3,6 +3,7 @@
 // contact and handed to every law (PHYSICS.md 2). Sign convention: n points from j (or the wall)
 // towards i; overlap > 0 while the surfaces overlap, and the surface gap is -overlap.
 #pragma once
+#include "core/inline.hpp"
 #include "core/vec3.hpp"
 
 namespace silodem {
@@ -40,7 +41,7 @@ struct BodyState {
 };
 
 namespace detail {
-inline void finish_kinematics(ContactGeometry& g, const Vec3& v_i, const Vec3& v_j) {
+SILODEM_HOT void finish_kinematics(ContactGeometry& g, const Vec3& v_i, const Vec3& v_j) {
   // Contact-point velocities: v + omega x r, with r = -arm_i n for i and +arm_j n for j.
   const Vec3 vc_i = v_i + cross(g.omega_i, -g.arm_i * g.n);
   const Vec3 vc_j = v_j + cross(g.omega_j, g.arm_j * g.n);
@@ -53,7 +54,7 @@ inline void finish_kinematics(ContactGeometry& g, const Vec3& v_i, const Vec3& v
 
 // Particle i against particle j (centres closer than R_i + R_j + some reach; dist > 0). Inline:
 // in the force loop a field no law reads is never computed.
-inline ContactGeometry pair_geometry(const BodyState& i, const BodyState& j) {
+SILODEM_HOT ContactGeometry pair_geometry(const BodyState& i, const BodyState& j) {
   ContactGeometry g;
   const Vec3 d = i.x - j.x;
   const double dist = norm(d);
@@ -82,8 +83,8 @@ inline ContactGeometry pair_geometry(const BodyState& i, const BodyState& j) {
 
 // Particle i against a wall surface point p with outward normal n (towards the particle side),
 // the wall moving with velocity v_wall. `distance` is the centre-to-surface distance along n.
-inline ContactGeometry wall_geometry(const BodyState& i, const Vec3& n, double distance,
-                                     const Vec3& v_wall) {
+SILODEM_HOT ContactGeometry wall_geometry(const BodyState& i, const Vec3& n, double distance,
+                                          const Vec3& v_wall) {
   ContactGeometry g;
   g.n = n;
   g.overlap = i.radius - distance;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <utility>
 
+#include "core/inline.hpp"
 #include "model/contact/contact_history.hpp"
 #include "model/contact/contact_model.hpp"
 #include "model/contact/laws.hpp"
@@ -56,8 +57,8 @@ decltype(auto) with_kernels(const ContactLaw& law, F&& f) {
 // One contact: all four slots, combined as PHYSICS.md 2-3 say. Clears the history when the
 // surfaces do not touch (history lives as long as the contact).
 template <class K>
-inline ContactResult evaluate(const ContactLaw& law, const ContactGeometry& g, ContactState& s,
-                              double dt) {
+SILODEM_HOT ContactResult evaluate(const ContactLaw& law, const ContactGeometry& g, ContactState& s,
+                                   double dt) {
   ContactResult r;
   r.cohesion = K::Cohesion::kernel(law.cp, g);
   if (g.overlap <= 0.0) {

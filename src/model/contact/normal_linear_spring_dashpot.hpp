@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/inline.hpp"
 #include "model/contact/registry.hpp"
 
 namespace silodem {
@@ -18,7 +19,7 @@ struct NormalLinearSpringDashpot {
   static constexpr const char* summary =
       "linear spring + dashpot from restitution (Eq. 7, 9-12; E2, E3, E5)";
 
-  static NormalForce kernel(const NormalParams& p, const ContactGeometry& g) {
+  SILODEM_HOT static NormalForce kernel(const NormalParams& p, const ContactGeometry& g) {
     NormalForce f;
     f.eta = 2.0 * p.damping_ratio * std::sqrt(g.m_eff * p.stiffness);
     f.elastic = p.stiffness * g.overlap;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/inline.hpp"
 #include "model/contact/contact_history.hpp"
 #include "model/contact/registry.hpp"
 
@@ -19,9 +20,9 @@ struct RollingEpsd {
   static constexpr const char* name = "epsd";
   static constexpr const char* summary = "elastic-plastic spring-dashpot (Ai et al. 2011 type C)";
 
-  static RollingTorque kernel(const RollingParams& p, const ContactGeometry& g,
-                              const NormalParams& np, const NormalForce& fn, double cohesion,
-                              Vec3& spring, double dt) {
+  SILODEM_HOT static RollingTorque kernel(const RollingParams& p, const ContactGeometry& g,
+                                          const NormalParams& np, const NormalForce& fn,
+                                          double cohesion, Vec3& spring, double dt) {
     const double k_r =
         p.stiffness_factor * np.stiffness * p.friction * p.friction * g.r_eff * g.r_eff;
     Vec3 w = g.omega_i - g.omega_j;

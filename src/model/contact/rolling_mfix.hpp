@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/inline.hpp"
 #include "model/contact/registry.hpp"
 
 namespace silodem {
@@ -23,22 +24,26 @@ struct RollingMfix {
   static constexpr const char* summary =
       "MFIX: torque mu_r d k_n delta_n against each particle's own spin (E10)";
 
-  static Vec3 oppose(const Vec3& omega, double magnitude, double inv_inertia, bool regularize,
-                     double dt) {
-    const double w = norm(omega);
+  // -magnitude omega / max(|omega|, w_eps), w_eps = 10 magnitude dt / I; below w_eps that is
+  // -omega I / (10 dt), which needs neither a square root nor a division (and is 0 at rest).
+  SILODEM_HOT static Vec3 oppose(const Vec3& omega, double magnitude, double inertia,
+                                 double inv_inertia, bool regularize, double dt) {
+    const double w2 = norm2(omega);
     const double w_eps = regularize ? 10.0 * magnitude * dt * inv_inertia : 0.0;
-    const double scale = std::max(w, w_eps);
-    return scale > 0.0 ? omega * (-magnitude / scale) : Vec3{};
+    const double a = w2 > w_eps * w_eps ? -magnitude / std::sqrt(w2) : -inertia / (10.0 * dt);
+    return omega * a;
   }
 
-  static RollingTorque kernel(const RollingParams& p, const ContactGeometry& g,
-                              const NormalParams& np, const NormalForce&, double, Vec3&,
-                              double dt) {
+  SILODEM_HOT static RollingTorque kernel(const RollingParams& p, const ContactGeometry& g,
+                                          const NormalParams& np, const NormalForce&, double, Vec3&,
+                                          double dt) {
     const double elastic = np.stiffness * g.overlap;  // k_n delta_n, elastic part only
     RollingTorque t;
-    t.on_i = oppose(g.omega_i, p.friction * g.d_i * elastic, g.inv_inertia_i, p.regularize, dt);
+    t.on_i = oppose(g.omega_i, p.friction * g.d_i * elastic, g.inertia_i, g.inv_inertia_i,
+                    p.regularize, dt);
     if (g.d_j > 0.0)
-      t.on_j = oppose(g.omega_j, p.friction * g.d_j * elastic, g.inv_inertia_j, p.regularize, dt);
+      t.on_j = oppose(g.omega_j, p.friction * g.d_j * elastic, g.inertia_j, g.inv_inertia_j,
+                      p.regularize, dt);
     return t;
   }
 

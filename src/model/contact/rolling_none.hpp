@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // No rolling resistance.
 #pragma once
+#include "core/inline.hpp"
 #include "model/contact/registry.hpp"
 
 namespace silodem {
@@ -9,8 +10,9 @@ struct RollingNone {
   static constexpr const char* name = "none";
   static constexpr const char* summary = "no rolling resistance";
 
-  static RollingTorque kernel(const RollingParams&, const ContactGeometry&, const NormalParams&,
-                              const NormalForce&, double, Vec3& spring, double) {
+  SILODEM_HOT static RollingTorque kernel(const RollingParams&, const ContactGeometry&,
+                                          const NormalParams&, const NormalForce&, double,
+                                          Vec3& spring, double) {
     spring = Vec3{};
     return {};
   }

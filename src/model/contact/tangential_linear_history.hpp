@@ -11,6 +11,7 @@
 #pragma once
 #include <cmath>
 
+#include "core/inline.hpp"
 #include "model/contact/contact_history.hpp"
 #include "model/contact/registry.hpp"
 
@@ -21,18 +22,20 @@ struct TangentialLinearHistory {
   static constexpr const char* summary =
       "spring with history + dashpot, Coulomb cap (Eq. 8; E6 as MFIX)";
 
-  static Vec3 kernel(const TangentialParams& p, const ContactGeometry& g, double eta_n,
-                     double cap_force, Vec3& spring, double dt) {
+  SILODEM_HOT static Vec3 kernel(const TangentialParams& p, const ContactGeometry& g, double eta_n,
+                                 double cap_force, Vec3& spring, double dt) {
     rotate_into_tangent_plane(spring, g.n);
     spring += g.v_t * dt;
     const double eta_t = p.damping_fraction * eta_n;
     Vec3 f = -p.stiffness * spring - eta_t * g.v_t;  // Eq. 8, trial force
     const double f2 = norm2(f);
     const double cap = p.friction * cap_force;  // Eq. 8 (Coulomb)
-    if (f2 > cap * cap) {
-      f *= cap / std::sqrt(f2);
-      spring = f * (-1.0 / p.stiffness);
-    }
+    // Selects, not branches: stick and slip alternate unpredictably in a settled cohesive bed.
+    const bool slip = f2 > cap * cap;
+    const double scale = slip ? cap / std::sqrt(f2) : 1.0;
+    f *= scale;
+    const Vec3 reset = f * (-1.0 / p.stiffness);
+    spring = {slip ? reset.x : spring.x, slip ? reset.y : spring.y, slip ? reset.z : spring.z};
     return f;
   }
 

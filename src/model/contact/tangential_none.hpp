@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // No tangential force (frictionless contacts).
 #pragma once
+#include "core/inline.hpp"
 #include "model/contact/registry.hpp"
 
 namespace silodem {
@@ -9,8 +10,8 @@ struct TangentialNone {
   static constexpr const char* name = "none";
   static constexpr const char* summary = "frictionless";
 
-  static Vec3 kernel(const TangentialParams&, const ContactGeometry&, double, double, Vec3& spring,
-                     double) {
+  SILODEM_HOT static Vec3 kernel(const TangentialParams&, const ContactGeometry&, double, double,
+                                 Vec3& spring, double) {
     spring = Vec3{};
     return {};
   }

@@ -1,0 +1,11 @@
+// SPDX-License-Identifier: MIT
+// SILODEM_HOT: force inlining of a small function of the force loop (contact kernels, geometry).
+// GCC's size heuristics otherwise keep some kernels as calls, which costs about a third of the
+// step on the benchmark bed (BENCHMARKS.md).
+#pragma once
+
+#if defined(__GNUC__) || defined(__clang__)
+#define SILODEM_HOT [[gnu::always_inline]] inline
+#else
+#define SILODEM_HOT inline
+#endif
