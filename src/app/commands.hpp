@@ -15,7 +15,19 @@ struct RunOptions {
   bool force = false;                  // resume although DIR/case.toml changed
 };
 
+struct BenchOptions {
+  std::string case_path;  // a silo case; main() defaults it to cases/paper/L3-I2.toml
+  int threads = 0;
+  long steps = 2000;
+  bool json = false;
+  std::vector<std::string> overrides;
+  std::string cache_dir;   // default: $XDG_CACHE_HOME/silodem or ~/.cache/silodem
+  bool refill = false;     // ignore a cached fill (and replace it)
+  std::string export_dir;  // write the settled bed (bed.csv, bed.json) here for a peer code
+};
+
 int run_command(const RunOptions& o);
+int bench_command(const BenchOptions& o);
 int check_command(const std::string& case_path, bool json,
                   const std::vector<std::string>& overrides);
 

@@ -63,6 +63,26 @@ int main(int argc, char** argv) {
       ->required();
   compare_cmd->add_option("--labels", compare_labels, "legend labels, comma separated");
 
+  app::BenchOptions bench;
+  bench.case_path = SILODEM_CASES_DIR "/paper/L3-I2.toml";
+  auto* bench_cmd = cli.add_subcommand(
+      "bench", "time a settled silo bed and the start of its discharge (particle-steps/s, memory)");
+  bench_cmd
+      ->add_option("case", bench.case_path,
+                   "silo case (default: the paper's L3-I2 at k = 3, cases/paper/L3-I2.toml)")
+      ->check(CLI::ExistingFile);
+  bench_cmd->add_option("--threads", bench.threads, "OpenMP threads (default: case file, else all)")
+      ->check(CLI::Range(1, 1024));
+  bench_cmd->add_option("--steps", bench.steps, "steps timed in each phase (default 2000)")
+      ->check(CLI::Range(1L, 100000000L));
+  bench_cmd->add_flag("--json", bench.json, "print one JSON object");
+  bench_cmd->add_option("--set", bench.overrides, "override a case-file value (repeatable)");
+  bench_cmd->add_option("--cache", bench.cache_dir,
+                        "directory of cached fills (default ~/.cache/silodem)");
+  bench_cmd->add_flag("--refill", bench.refill, "fill again instead of loading a cached fill");
+  bench_cmd->add_option("--export-bed", bench.export_dir,
+                        "write the settled bed (bed.csv, bed.json) into this directory");
+
   auto* docs_cmd =
       cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
 
@@ -83,6 +103,7 @@ int main(int argc, char** argv) {
       return app::run_command(run);
     }
     if (*report_cmd) return app::report_command(report_dir);
+    if (*bench_cmd) return app::bench_command(bench);
     if (*compare_cmd) return app::compare_command(compare_dirs, compare_out, compare_labels);
     if (*check_cmd) return app::check_command(check_path, json, check_overrides);
     if (*docs_cmd) {

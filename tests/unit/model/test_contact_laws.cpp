@@ -7,6 +7,7 @@
 
 #include "../../physics/helpers.hpp"
 #include "model/contact/cohesion_common.hpp"
+#include "model/contact/dispatch.hpp"
 
 namespace silodem {
 namespace {
@@ -34,6 +35,30 @@ TEST(Registry, EverySlotHasNoneExceptNormalAndNamesAreUnique) {
       if (&a != &b) {
         EXPECT_FALSE(a.slot == b.slot && std::string(a.name) == b.name) << a.name;
       }
+}
+
+// The force loop runs the kernels dispatch.hpp picks from a law's indices: each registered law
+// must select its own compiled kernel (a list out of order would run the wrong physics).
+TEST(Dispatch, EachLawSelectsItsOwnCompiledKernel) {
+  for (const LawEntry& e : contact_laws()) {
+    ContactLaw law;
+    law.law_index[static_cast<int>(e.slot)] = e.index;
+    const std::string got = with_kernels(law, [&](auto k) -> std::string {
+      using K = decltype(k);
+      switch (e.slot) {
+        case Slot::Normal:
+          return K::Normal::name;
+        case Slot::Tangential:
+          return K::Tangential::name;
+        case Slot::Rolling:
+          return K::Rolling::name;
+        case Slot::Cohesion:
+          return K::Cohesion::name;
+      }
+      return "";
+    });
+    EXPECT_EQ(got, e.name) << slot_name(e.slot);
+  }
 }
 
 TEST(Geometry, PairKinematics) {

@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: MIT
+// `silodem bench`: the throughput of a real silo bed (issue 6). Fills the case's silo (by default
+// the paper's L3-I2 at k = 3 with the paper's cohesion) or loads that fill from a cache, then
+// times N steps of the settled bed (valve closed) and N steps right after the valve opens.
+// Figures: particle-steps per second, neighbour-list rebuilds, contacts per particle, peak
+// resident memory. BENCHMARKS.md records them.
+#include <fmt/format.h>
+#include <sys/resource.h>
+#include <toml++/toml.h>
+#include <unistd.h>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/commands.hpp"
+#include "app/progress.hpp"
+#include "app/run_common.hpp"
+#include "core/random.hpp"
+#include "io/checkpoint.hpp"
+#include "io/config/load.hpp"
+#include "scenario/layered_filling.hpp"
+
+namespace fs = std::filesystem;
+
+namespace silodem::app {
+namespace {
+
+// Bump when a change to the fill or the particle state would make old cached beds wrong.
+constexpr int kFillCacheVersion = 1;
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+fs::path default_cache_dir() {
+  if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "silodem";
+  if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "silodem";
+  return fs::temp_directory_path() / "silodem-cache";
+}
+
+long peak_rss_bytes() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return long(u.ru_maxrss) * 1024;  // Linux: kilobytes
+}
+
+long current_rss_bytes() {
+  std::ifstream in("/proc/self/statm");
+  long pages = 0, resident = 0;
+  in >> pages >> resident;
+  return resident * long(sysconf(_SC_PAGESIZE));
+}
+
+struct Phase {
+  long steps = 0;
+  double seconds = 0.0;
+  long rebuilds = 0;
+  double rate(std::size_t n) const { return seconds > 0 ? double(n) * double(steps) / seconds : 0; }
+};
+
+Phase time_steps(Simulation& sim, long steps, ProgressLine& progress, const char* what) {
+  Phase ph;
+  ph.steps = steps;
+  const long builds0 = sim.neighbors().builds;
+  const auto t0 = std::chrono::steady_clock::now();
+  const long chunk = std::max(1L, steps / 20);
+  for (long done = 0; done < steps;) {
+    const long k = std::min(chunk, steps - done);
+    sim.run_steps(k);
+    done += k;
+    progress.show(fmt::format("{}: {} of {} steps", what, done, steps));
+  }
+  ph.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ph.rebuilds = sim.neighbors().builds - builds0;
+  return ph;
+}
+
+// The bed and what a peer code needs to rebuild it (bench/peers/liggghts/): one row per
+// particle, and the silo, time step, skin and contact parameters as JSON.
+void export_bed(const fs::path& dir, const Case& c, const CaseReport& report,
+                const Simulation& sim) {
+  fs::create_directories(dir);
+  const ParticleStore& p = sim.particles();
+  std::string csv = "id,coal,x_m,y_m,z_m,radius_m,mass_kg\n";
+  for (std::size_t i = 0; i < p.size(); ++i)
+    csv += fmt::format("{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", p.id[i], p.material[i],
+                       p.x[i].x, p.x[i].y, p.x[i].z, p.radius[i], p.mass[i]);
+  write_text(dir / "bed.csv", csv);
+  const SiloGeometry& g = c.silo.geometry;
+  const ContactModel& m = sim.model();
+  auto law_table = [](const ContactLaw& l) {
+    return toml::table{{"normal", l.law_names[0]},
+                       {"tangential", l.law_names[1]},
+                       {"rolling", l.law_names[2]},
+                       {"cohesion", l.law_names[3]},
+                       {"stiffness_n_N_m", l.np.stiffness},
+                       {"restitution", l.np.restitution},
+                       {"damping_ratio", l.np.damping_ratio},
+                       {"stiffness_t_N_m", l.tp.stiffness},
+                       {"tangential_damping_fraction", l.tp.damping_fraction},
+                       {"friction", l.tp.friction},
+                       {"rolling_friction", l.rp.friction},
+                       {"cohesion_force_N", l.cp.force}};
+  };
+  toml::array pairs, walls, coals;
+  for (int a = 0; a < m.materials(); ++a) {
+    coals.push_back(toml::table{{"name", c.coals[std::size_t(a)].name},
+                                {"cg_diameter_m", report.coals[std::size_t(a)].cg_diameter}});
+    walls.push_back(law_table(m.wall(a)));
+    for (int b = 0; b < m.materials(); ++b) {
+      toml::table t = law_table(m.pair(a, b));
+      t.insert("a", a), t.insert("b", b);
+      pairs.push_back(std::move(t));
+    }
+  }
+  toml::table t{{"particles", int64_t(p.size())},
+                {"time_step_s", sim.settings().dt},
+                {"skin_m", sim.settings().skin},
+                {"gravity_m_s2", -sim.settings().gravity.z},
+                {"silo", toml::table{{"outlet_diameter_m", g.outlet_diameter},
+                                     {"cone_height_m", g.cone_height},
+                                     {"cylinder_diameter_m", g.cylinder_diameter},
+                                     {"cylinder_height_m", g.cylinder_height},
+                                     {"valve_gap_m", g.valve_gap}}},
+                {"coals", std::move(coals)},
+                {"particle_particle", std::move(pairs)},
+                {"particle_wall", std::move(walls)}};
+  write_text(dir / "bed.json", to_json(t));
+}
+
+}  // namespace
+
+int bench_command(const BenchOptions& o) {
+  const long rss_start = current_rss_bytes();  // the program and its libraries, before any particle
+  const Case c = config::load_case_file(o.case_path, o.overrides);
+  if (!c.silo.present)
+    throw InputError({}, "bench",
+                     fmt::format("{} has no [silo]: bench times a silo bed", o.case_path));
+  if (o.steps < 1) throw InputError({}, "--steps", "must be at least 1");
+  ContactModel model;
+  const CaseReport report = derive_case(c, &model);
+  std::size_t valve = 0;
+  auto sim = build_silo_simulation(c, report, std::move(model), &valve, o.threads);
+  const int threads = sim->settings().threads;
+
+  // The cache key: the case as given (text and overrides) and the cache format.
+  std::string key_text = read_text(o.case_path);
+  for (const auto& s : o.overrides) key_text += "\n--set " + s;
+  key_text += fmt::format("\n--version {}", kFillCacheVersion);
+  const fs::path cache_dir = o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir);
+  const fs::path cache = cache_dir / fmt::format("fill-{:016x}.bin", text_hash(key_text));
+
+  ProgressLine progress;
+  double fill_wall = 0.0;
+  bool cached = false;
+  if (!o.refill && fs::exists(cache)) {
+    ByteReader r = read_checkpoint(cache.string());
+    sim->load(r);
+    if (!r.done()) throw std::runtime_error("fill cache " + cache.string() + ": unread bytes");
+    cached = true;
+    if (!o.json) fmt::print("loaded the fill from {}\n", cache.string());
+  } else {
+    Random rng(c.time.seed);
+    const FillReport f = fill_silo(*sim, c, report.segment_coal, rng, [&](const std::string& s) {
+      progress.show(fmt::format("fill {}  particles {}  wall {:.0f} s", s, sim->particles().size(),
+                                progress.elapsed()));
+    });
+    progress.finish();
+    fill_wall = progress.elapsed();
+    fs::create_directories(cache_dir);
+    ByteWriter w;
+    sim->save(w);
+    write_checkpoint(cache.string(), w);
+    if (!o.json)
+      fmt::print("filled {} particles ({:.3f} kg) in {:.0f} s wall; cached in {}\n", f.particles,
+                 f.mass, fill_wall, cache.string());
+  }
+  const std::size_t n = sim->particles().size();
+  if (!o.export_dir.empty()) export_bed(o.export_dir, c, report, *sim);
+  const long rss_bed = current_rss_bytes();
+
+  // Warm-up: builds the list, touches the buffers.
+  sim->run_steps(10);
+  const ContactTally tally = sim->contact_tally();
+  long contacts = 0;
+  for (int k : tally.particle_contacts) contacts += k;
+  const double list_pairs =
+      double(sim->neighbors().partner.size()) / double(std::max<std::size_t>(n, 1));
+
+  const Phase settled = time_steps(*sim, o.steps, progress, "settled bed");
+  sim->set_wall_enabled(valve, false);  // the valve opens
+  const Phase flowing = time_steps(*sim, o.steps, progress, "discharge");
+  progress.finish();
+  const long peak = peak_rss_bytes();
+  // What the particles cost: the peak above the program's own footprint.
+  const double per_particle = double(peak - rss_start) / double(std::max<std::size_t>(n, 1));
+
+  toml::table t{{"case", o.case_path},
+                {"particles", int64_t(n)},
+                {"k", report.k},
+                {"time_step_s", report.time_step},
+                {"steps", int64_t(o.steps)},
+                {"threads", int64_t(threads)},
+                {"particle_steps_per_s", settled.rate(n)},
+                {"discharge_particle_steps_per_s", flowing.rate(n)},
+                {"neighbor_rebuilds", int64_t(settled.rebuilds + flowing.rebuilds)},
+                {"settled_rebuilds", int64_t(settled.rebuilds)},
+                {"discharge_rebuilds", int64_t(flowing.rebuilds)},
+                {"contacts_per_particle", double(contacts) / double(std::max<std::size_t>(n, 1))},
+                {"list_pairs_per_particle", list_pairs},
+                {"peak_rss_bytes", int64_t(peak)},
+                {"rss_after_fill_bytes", int64_t(rss_bed)},
+                {"rss_at_start_bytes", int64_t(rss_start)},
+                {"memory_bytes_per_particle", per_particle},
+                {"fill_cached", cached},
+                {"fill_wall_s", fill_wall},
+                {"cache", cache.string()}};
+  if (o.json) {
+    fmt::print("{}\n", to_json(t));
+    return kExitOk;
+  }
+  fmt::print(
+      "{} particles, {} threads, {} steps each (dt = {:.3g} s)\n"
+      "  settled bed : {:.3g} particle-steps/s ({:.1f} s, {} rebuilds)\n"
+      "  discharge   : {:.3g} particle-steps/s ({:.1f} s, {} rebuilds)\n"
+      "  contacts per particle {:.2f}, list pairs per particle {:.2f}\n"
+      "  peak memory {:.1f} MiB; above the program's own {:.1f} MiB: {:.0f} bytes per particle\n",
+      n, threads, o.steps, report.time_step, settled.rate(n), settled.seconds, settled.rebuilds,
+      flowing.rate(n), flowing.seconds, flowing.rebuilds,
+      double(contacts) / double(std::max<std::size_t>(n, 1)), list_pairs,
+      double(peak) / (1024.0 * 1024.0), double(rss_start) / (1024.0 * 1024.0), per_particle);
+  return kExitOk;
+}
+
+}  // namespace silodem::app

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# End-to-end test of `silodem bench` on the default case: the JSON the issue names, the fill
+# cache (made, reused, keyed on the case), the exported bed against the case's own numbers, and
+# a clear refusal of a case without a silo.
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail=0
+bad() { printf 'FAIL: %s\n' "$*"; fail=1; }
+
+case_file="$src/cases/default.toml"
+"$bin" bench "$case_file" --threads 1 --steps 20 --json --cache "$work/cache" \
+  --export-bed "$work/bed" > "$work/first.json" || bad "first bench exited $?"
+"$bin" bench "$case_file" --threads 1 --steps 20 --json --cache "$work/cache" \
+  > "$work/second.json" || bad "second bench exited $?"
+"$bin" bench "$case_file" --threads 1 --steps 20 --json --cache "$work/cache" \
+  --set "coarse_graining.k=4" > "$work/k4.json" || bad "k = 4 bench exited $?"
+"$bin" check "$case_file" --json > "$work/check.json" || bad "check exited $?"
+
+python3 - "$work" <<'PY' || fail=1
+import csv, json, math, os, sys
+w = sys.argv[1]
+first, second, k4 = (json.load(open(os.path.join(w, f + ".json"))) for f in ("first", "second", "k4"))
+check = json.load(open(os.path.join(w, "check.json")))
+need = ["particles", "steps", "threads", "particle_steps_per_s", "discharge_particle_steps_per_s",
+        "neighbor_rebuilds", "contacts_per_particle", "peak_rss_bytes"]
+for key in need:
+    assert key in first, f"missing {key}"
+assert first["steps"] == 20 and first["threads"] == 1, first
+assert first["particle_steps_per_s"] > 0 and first["discharge_particle_steps_per_s"] > 0
+# A settled cohesive bed of spheres: coordination between 3 (isostatic frictional packing) and 8.
+assert 3.0 < first["contacts_per_particle"] < 8.0, first["contacts_per_particle"]
+assert first["peak_rss_bytes"] > first["rss_at_start_bytes"] > 0
+# The cache: the first run fills, the second loads the same bed, another k is another bed.
+assert first["fill_cached"] is False and second["fill_cached"] is True, (first, second)
+assert second["particles"] == first["particles"] and second["cache"] == first["cache"]
+assert k4["fill_cached"] is False and k4["cache"] != first["cache"]
+assert os.path.exists(first["cache"]) and os.path.exists(k4["cache"])
+# k = 4 particles are (4/3)^3 heavier: about (3/4)^3 as many fill the same silo mass.
+ratio = k4["particles"] / first["particles"]
+assert abs(ratio / (3 / 4) ** 3 - 1) < 0.1, ratio
+# The exported bed: one row per particle, each coal's CG mass and diameter as `check` derives them.
+rows = list(csv.DictReader(open(os.path.join(w, "bed", "bed.csv"))))
+assert len(rows) == first["particles"], (len(rows), first["particles"])
+bed = json.load(open(os.path.join(w, "bed", "bed.json")))
+assert bed["particles"] == len(rows)
+for row in rows:
+    m = check["materials"][int(row["coal"])]
+    assert abs(2 * float(row["radius_m"]) / m["cg_diameter_m"] - 1) < 1e-12, row
+    assert abs(float(row["mass_kg"]) / m["cg_mass_kg"] - 1) < 1e-12, row
+    assert 0.0 <= float(row["z_m"]) < bed["silo"]["cone_height_m"] + bed["silo"]["cylinder_height_m"]
+assert abs(bed["time_step_s"] / check["time_step_s"] - 1) < 1e-12
+PY
+
+# A generic case (no silo) is refused with exit code 2 and one line naming the file.
+"$bin" bench "$src/tests/data/base.toml" --steps 5 --cache "$work/cache" \
+  > "$work/out.txt" 2> "$work/err.txt"
+code=$?
+[ "$code" -eq 2 ] || bad "a case without [silo]: exit $code, expected 2"
+[ "$(wc -l < "$work/err.txt")" -eq 1 ] || bad "a case without [silo]: not one line: $(cat "$work/err.txt")"
+grep -q "base.toml" "$work/err.txt" || bad "the error does not name the file"
+
+[ "$fail" -eq 0 ] && echo "e2e_bench: all checks passed"
+exit "$fail"
