@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The four slots of a contact law (PHYSICS.md 2-3): normal, tangential, rolling, cohesion.
-// Each slot holds one law, chosen by name from contact/registry.cpp: a pure kernel (function
-// pointer) plus its parameters, checked once. A law reads only the parameters of its slot.
+// Each slot holds one law, chosen by name from the lists in contact/laws.hpp: a pure kernel (the
+// force loop inlines it, dispatch.hpp; the pointer here is for tests and tools) plus its
+// parameters, checked once. A law reads only the parameters of its slot.
 #pragma once
 #include "core/vec3.hpp"
 #include "model/contact/contact_geometry.hpp"
