@@ -34,6 +34,19 @@ void ParticleStore::remove(std::size_t i) {
   swap_pop(inv_inertia, i), swap_pop(material, i), swap_pop(id, i);
 }
 
+template <class T>
+static void apply(std::vector<T>& a, const std::vector<std::size_t>& order) {
+  std::vector<T> b(a.size());
+  for (std::size_t k = 0; k < order.size(); ++k) b[k] = a[order[k]];
+  a.swap(b);
+}
+
+void ParticleStore::permute(const std::vector<std::size_t>& order) {
+  apply(x, order), apply(v, order), apply(omega, order), apply(f, order), apply(t, order);
+  apply(f_ext, order), apply(radius, order), apply(mass, order), apply(inv_mass, order);
+  apply(inv_inertia, order), apply(material, order), apply(id, order);
+}
+
 long ParticleStore::index_of(std::uint64_t want) const {
   for (std::size_t i = 0; i < id.size(); ++i)
     if (id[i] == want) return static_cast<long>(i);

@@ -25,6 +25,8 @@ class ParticleStore {
   std::uint64_t add(const Vec3& pos, const Vec3& vel, const Vec3& spin, double r, double m,
                     int mat);
   void remove(std::size_t i);
+  // Reorders every array: new index k holds the particle that was at order[k] (a permutation).
+  void permute(const std::vector<std::size_t>& order);
   double inertia(std::size_t i) const { return 1.0 / inv_inertia[i]; }
   // Index of a stable id, or -1 (linear search: for tests and tools, not for loops).
   long index_of(std::uint64_t id) const;

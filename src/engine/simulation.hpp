@@ -26,6 +26,9 @@ struct SimulationSettings {
   // no bound) or a contact overlaps by more than max_overlap times the smaller radius (0 = off).
   double max_speed = 0.0;
   double max_overlap = 0.5;
+  // Reorder the particles along a Morton (Z-order) curve before every `reorder_every`-th
+  // neighbour-list build (0 = never), so that neighbours sit close in memory.
+  int reorder_every = 0;
 };
 
 // What each particle's contacts do right now, for observers (probes, VTK output). Computed on
@@ -94,6 +97,7 @@ class Simulation {
   template <class K>
   void wall_forces(int tid, double guard);
   void update_neighbors();
+  void reorder_spatially();
   void run_hooks(Phase ph);
   void check_state() const;
   [[noreturn]] void overlap_stop(std::size_t i, long j, double overlap) const;

@@ -144,6 +144,7 @@ SimulationSettings settings_of(const Case& c, const CaseReport& report, double d
   s.dt = report.time_step;
   s.gravity = c.time.gravity;
   s.skin = c.time.skin * d_min;
+  s.reorder_every = c.time.reorder_every;
   s.threads = threads_override > 0 ? threads_override : c.time.threads;
   s.max_overlap = c.time.max_overlap;
   s.max_speed = c.time.max_speed;

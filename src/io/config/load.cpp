@@ -319,6 +319,7 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     if (v.was_given("gravity")) c.time.gravity = v.vector("gravity");
     c.time.skin = v.number("skin");
     c.time.threads = int(v.number("threads"));
+    c.time.reorder_every = int(v.number("reorder_every"));
     c.time.seed = std::uint64_t(v.number("seed"));
     c.time.max_speed = v.number("max_speed");
     c.time.max_overlap = v.number("max_overlap");

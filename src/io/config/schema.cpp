@@ -32,6 +32,12 @@ const std::vector<Section>& sections() {
                .with_default(0.25)
                .above(0)
                .at_most(5),
+           F::integer("reorder_every",
+                      "sort the particles along a Morton curve before every N-th neighbour-list "
+                      "build, so that neighbours are close in memory (speed only; 0 = never)")
+               .with_default(0)
+               .at_least(0)
+               .at_most(1000000),
            F::integer("threads", "OpenMP threads; 0 = all cores")
                .with_default(0)
                .at_least(0)

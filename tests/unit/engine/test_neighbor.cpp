@@ -54,7 +54,7 @@ TEST(VerletList, RebuildOnlyAfterHalfSkin) {
 struct Loaded {
   Vec3 spring, xa, xb;
 };
-Loaded loaded_pair(bool rebuild, bool remove_far, bool with_far) {
+Loaded loaded_pair(bool rebuild, bool remove_far, bool with_far, bool reorder = false) {
   test::Laws l;
   l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
   l.tangential = "linear_history";
@@ -63,6 +63,7 @@ Loaded loaded_pair(bool rebuild, bool remove_far, bool with_far) {
   s.dt = 1e-6;
   s.gravity = {};
   s.threads = 1;
+  s.reorder_every = reorder ? 1 : 0;
   Simulation sim(test::model_of(l), s);
   auto& p = sim.particles();
   std::uint64_t far = 0;
@@ -110,6 +111,46 @@ TEST(ContactHistory, SurvivesRemovalThatReordersParticles) {
   ASSERT_GT(norm(alone.spring), 0.0);
   EXPECT_NEAR(removed.spring.y / alone.spring.y, 1.0, 1e-9);
   EXPECT_NEAR(removed.xb.y / alone.xb.y, 1.0, 1e-9);
+}
+
+TEST(ContactHistory, SurvivesMortonReorder) {
+  // The far sphere comes first in memory; the Morton sort puts a and b (near the origin) first,
+  // before the first build and again at the forced rebuild, while the spring is loaded.
+  const Loaded plain = loaded_pair(true, false, true);
+  const Loaded sorted = loaded_pair(true, false, true, true);
+  ASSERT_GT(norm(plain.spring), 0.0);
+  EXPECT_NEAR(sorted.spring.y / plain.spring.y, 1.0, 1e-12);
+  EXPECT_NEAR(sorted.xb.y / plain.xb.y, 1.0, 1e-12);
+}
+
+TEST(Reorder, FreeFlightIsExactWhileParticlesAreSortedEveryBuild) {
+  // Two spheres fly past each other (no contact, no gravity), with a skin so small that the list
+  // is rebuilt, and the particles re-sorted, every few steps; their Morton order swaps midway.
+  // Each must still move exactly with its own velocity: the sort carries every per-particle
+  // array, including the half-step velocities of the step in progress.
+  test::Laws l;
+  l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
+  SimulationSettings s;
+  s.dt = 1e-5;
+  s.gravity = {};
+  s.threads = 1;
+  s.skin = 1e-4;
+  s.reorder_every = 1;
+  Simulation sim(test::model_of(l), s);
+  auto& p = sim.particles();
+  const auto a = p.add({0.3, 0, 0}, {-1.0, 0, 0}, {}, 1e-3, 1e-5, 0);
+  const auto b = p.add({0.1, 0.05, 0}, {1.0, 0, 0.5}, {}, 1e-3, 1e-5, 0);
+  const long steps = 20000;  // 0.2 s: they pass each other at 0.1 s
+  sim.run_steps(1);
+  EXPECT_EQ(p.index_of(b), 0);  // added second, sorted first: b is nearer the lowest corner
+  sim.run_steps(steps - 1);
+  const double t = double(steps) * s.dt;
+  EXPECT_GT(sim.neighbors().builds, 100);
+  EXPECT_EQ(p.index_of(a), 0);  // now a is
+  EXPECT_NEAR(p.x[std::size_t(p.index_of(a))].x, 0.3 - t, 1e-12);
+  EXPECT_NEAR(p.x[std::size_t(p.index_of(b))].x, 0.1 + t, 1e-12);
+  EXPECT_NEAR(p.x[std::size_t(p.index_of(b))].z, 0.5 * t, 1e-12);
+  EXPECT_EQ(p.v[std::size_t(p.index_of(a))].x, -1.0);
 }
 
 }  // namespace
