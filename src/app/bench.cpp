@@ -148,9 +148,13 @@ int bench_command(const BenchOptions& o) {
   auto sim = build_silo_simulation(c, report, std::move(model), &valve, o.threads);
   const int threads = sim->settings().threads;
 
-  // The cache key: the case as given (text and overrides) and the cache format.
+  // The cache key: the case as given (text and overrides) and the cache format. Overrides of
+  // keys that only change the speed (threads, reorder_every) keep the cached bed, so that they can
+  // be timed on the same one.
   std::string key_text = read_text(o.case_path);
-  for (const auto& s : o.overrides) key_text += "\n--set " + s;
+  for (const auto& s : o.overrides)
+    if (s.rfind("simulation.threads=", 0) != 0 && s.rfind("simulation.reorder_every=", 0) != 0)
+      key_text += "\n--set " + s;
   key_text += fmt::format("\n--version {}", kFillCacheVersion);
   const fs::path cache_dir = o.cache_dir.empty() ? default_cache_dir() : fs::path(o.cache_dir);
   const fs::path cache = cache_dir / fmt::format("fill-{:016x}.bin", text_hash(key_text));

@@ -17,12 +17,15 @@ case_file="$src/cases/default.toml"
   > "$work/second.json" || bad "second bench exited $?"
 "$bin" bench "$case_file" --threads 1 --steps 20 --json --cache "$work/cache" \
   --set "coarse_graining.k=4" > "$work/k4.json" || bad "k = 4 bench exited $?"
+"$bin" bench "$case_file" --threads 1 --steps 20 --json --cache "$work/cache" \
+  --set "simulation.reorder_every=5" > "$work/sorted.json" || bad "sorted bench exited $?"
 "$bin" check "$case_file" --json > "$work/check.json" || bad "check exited $?"
 
 python3 - "$work" <<'PY' || fail=1
 import csv, json, math, os, sys
 w = sys.argv[1]
-first, second, k4 = (json.load(open(os.path.join(w, f + ".json"))) for f in ("first", "second", "k4"))
+first, second, k4, srt = (json.load(open(os.path.join(w, f + ".json")))
+                          for f in ("first", "second", "k4", "sorted"))
 check = json.load(open(os.path.join(w, "check.json")))
 need = ["particles", "steps", "threads", "particle_steps_per_s", "discharge_particle_steps_per_s",
         "neighbor_rebuilds", "contacts_per_particle", "peak_rss_bytes"]
@@ -37,6 +40,9 @@ assert first["peak_rss_bytes"] > first["rss_at_start_bytes"] > 0
 assert first["fill_cached"] is False and second["fill_cached"] is True, (first, second)
 assert second["particles"] == first["particles"] and second["cache"] == first["cache"]
 assert k4["fill_cached"] is False and k4["cache"] != first["cache"]
+# A speed-only key (the Morton reorder) times the same cached bed.
+assert srt["fill_cached"] is True and srt["cache"] == first["cache"], srt
+assert srt["particles"] == first["particles"]
 assert os.path.exists(first["cache"]) and os.path.exists(k4["cache"])
 # k = 4 particles are (4/3)^3 heavier: about (3/4)^3 as many fill the same silo mass.
 ratio = k4["particles"] / first["particles"]
