@@ -67,7 +67,9 @@ def write_stl(work, silo, segments=96):
     rt = 0.5 * silo["cylinder_diameter_m"]
     hc = silo["cone_height_m"]
     ht = hc + silo["cylinder_height_m"]
-    rings = [(0.0, ro), (hc, rt), (ht, rt)]
+    # Many rings, so that no triangle is a sliver (LIGGGHTS refuses meshes with tiny angles).
+    rings = [(hc * k / 64, ro + (rt - ro) * k / 64) for k in range(65)]
+    rings += [(hc + (ht - hc) * k / 8, rt) for k in range(1, 9)]
     tris = []
     for (z0, r0), (z1, r1) in zip(rings, rings[1:]):
         for s in range(segments):
@@ -113,9 +115,20 @@ def write_input(work, bed, masses, steps, warmup):
     def eta_n(law, meff):  # silodem: eta_n = 2 zeta sqrt(m_eff k_n)
         return 2.0 * law["damping_ratio"] * math.sqrt(meff * law["stiffness_n_N_m"])
 
-    def sjkr(law, meff):  # cohesion energy density k_c: see README.md (what differs)
-        return 0.0
+    radii = {a: 0.5 * c["cg_diameter_m"] for a, c in enumerate(bed["coals"])}
 
+    def r_eff(a, b):
+        if a == 2 and b == 2:
+            return radii[0]  # wall-wall: never used
+        if a == 2 or b == 2:
+            return radii[b if a == 2 else a]
+        return radii[a] * radii[b] / (radii[a] + radii[b])
+
+    def ced(a, b):  # sjkr: F = CED * contact area ~ CED * 2 pi R* delta; half of k_n delta
+        law, _ = pair(a, b)
+        return 0.5 * law["stiffness_n_N_m"] / (2.0 * math.pi * r_eff(a, b))
+
+    ced_matrix = " ".join(repr(ced(a, b)) for a in range(3) for b in range(3))
     model = "model hooke/stiffness tangential history rolling_friction cdt"
     text = f"""# silodem settled bed in LIGGGHTS (written by liggghts_bench.py)
 atom_style granular
@@ -135,12 +148,16 @@ fix m3 all property/global gamman_abs peratomtypepair 3 {matrix(eta_n)}
 fix m4 all property/global gammat_abs peratomtypepair 3 {matrix(lambda l, m: l['tangential_damping_fraction'] * eta_n(l, m))}
 fix m5 all property/global coefficientFriction peratomtypepair 3 {matrix(lambda l, m: l['friction'])}
 fix m6 all property/global coefficientRollingFriction peratomtypepair 3 {matrix(lambda l, m: l['rolling_friction'])}
+fix m7 all property/global cohesionEnergyDensity peratomtypepair 3 {ced_matrix}
 timestep {bed['time_step_s']!r}
 fix grav all gravity {bed['gravity_m_s2']!r} vector 0 0 -1
-fix cad all mesh/surface file silo.stl type 3
+fix cad all mesh/surface file silo.stl type 3 curvature_tolerant yes
 fix walls all wall/gran {model} mesh n_meshes 1 meshes cad absolute_damping on
 fix valve all wall/gran {model} primitive type 3 zplane {-bed['silo']['valve_gap_m']!r} absolute_damping on
 fix integr all nve/sphere
+compute contacts all contact/atom
+compute coordination all reduce ave c_contacts
+thermo_style custom step atoms ke c_coordination cpu
 thermo 1000
 run {warmup}
 run {steps}

@@ -30,7 +30,7 @@ struct RollingMfix {
                                  double inv_inertia, bool regularize, double dt) {
     const double w2 = norm2(omega);
     const double w_eps = regularize ? 10.0 * magnitude * dt * inv_inertia : 0.0;
-    const double a = w2 > w_eps * w_eps ? -magnitude / std::sqrt(w2) : -inertia / (10.0 * dt);
+    const double a = w2 > w_eps * w_eps ? -magnitude / std::sqrt(w2) : inertia * (-0.1 / dt);
     return omega * a;
   }
 

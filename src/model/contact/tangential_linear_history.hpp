@@ -30,12 +30,10 @@ struct TangentialLinearHistory {
     Vec3 f = -p.stiffness * spring - eta_t * g.v_t;  // Eq. 8, trial force
     const double f2 = norm2(f);
     const double cap = p.friction * cap_force;  // Eq. 8 (Coulomb)
-    // Selects, not branches: stick and slip alternate unpredictably in a settled cohesive bed.
-    const bool slip = f2 > cap * cap;
-    const double scale = slip ? cap / std::sqrt(f2) : 1.0;
-    f *= scale;
-    const Vec3 reset = f * (-1.0 / p.stiffness);
-    spring = {slip ? reset.x : spring.x, slip ? reset.y : spring.y, slip ? reset.z : spring.z};
+    if (f2 > cap * cap) {
+      f *= cap / std::sqrt(f2);
+      spring = f * (-1.0 / p.stiffness);
+    }
     return f;
   }
 
