@@ -33,8 +33,12 @@ def run(cmd, **kw):
     return subprocess.run(cmd, check=True, text=True, capture_output=True, **kw)
 
 
-def silodem_bench(exe, case, steps, threads, export=None):
-    cmd = [exe, "bench", case, "--threads", str(threads), "--steps", str(steps), "--json"]
+DRY = ["--set", "contact.particle_particle.cohesion.law=none",
+       "--set", "contact.particle_wall.cohesion.law=none"]
+
+
+def silodem_bench(exe, case, steps, threads, extra, export=None):
+    cmd = [exe, "bench", case, "--threads", str(threads), "--steps", str(steps), "--json"] + extra
     if export:
         cmd += ["--export-bed", export]
     out = run(cmd).stdout
@@ -180,8 +184,14 @@ def liggghts_run(work, ranks):
     if len(loops) < 2:
         sys.exit(f"LIGGGHTS output without two 'Loop time' lines ({ranks} ranks):\n{p.stdout[-3000:]}")
     sec, procs, steps, atoms = loops[-1]
+    # Thermo rows of the timed run (step atoms ke coordination cpu): contacts per particle at its
+    # start and end, to compare the work with silodem's.
+    timed = p.stdout[p.stdout.rindex("Step"):]
+    rows = [l.split() for l in timed.splitlines()[1:] if re.match(r"^\s*\d+\s", l)]
     return {"ranks": int(procs), "seconds": float(sec), "steps": int(steps), "atoms": int(atoms),
             "particle_steps_per_s": int(atoms) * int(steps) / float(sec),
+            "contacts_per_particle_start": float(rows[0][3]),
+            "contacts_per_particle_end": float(rows[-1][3]),
             "wall_s": time.time() - t0}
 
 
@@ -192,11 +202,15 @@ def main():
     ap.add_argument("--steps", type=int, default=2000)
     ap.add_argument("--warmup", type=int, default=200)
     ap.add_argument("--work", default="liggghts-bench")
+    ap.add_argument("--cohesive", action="store_true",
+                    help="keep the case's moisture cohesion in silodem (LIGGGHTS has no "
+                         "constant-force law: its bed falls apart, README.md)")
     a = ap.parse_args()
+    extra = [] if a.cohesive else DRY
     if not shutil.which("liggghts"):
         sys.exit("liggghts is not installed: apt-get install -y liggghts (run.sh does it)")
     os.makedirs(a.work, exist_ok=True)
-    ours = {t: silodem_bench(a.silodem, a.case, a.steps, t, a.work if t == 1 else None)
+    ours = {t: silodem_bench(a.silodem, a.case, a.steps, t, extra, a.work if t == 1 else None)
             for t in (1, 2)}
     with open(os.path.join(a.work, "bed.json")) as f:
         bed = json.load(f)
@@ -214,9 +228,12 @@ def main():
     best_theirs = max(v["particle_steps_per_s"] for v in theirs.values())
     print(f"\n{len(rows)} particles, {a.steps} steps, dt = {bed['time_step_s']:.3g} s")
     for t, v in ours.items():
-        print(f"  silodem   {t} thread{'s' if t > 1 else ' '}: {v['particle_steps_per_s']:.3g} particle-steps/s")
+        print(f"  silodem   {t} thread{'s' if t > 1 else ' '}: {v['particle_steps_per_s']:.3g} "
+              f"particle-steps/s, {v['contacts_per_particle']:.2f} contacts per particle")
     for p, v in theirs.items():
-        print(f"  LIGGGHTS  {p} rank{'s' if p > 1 else ' '}  : {v['particle_steps_per_s']:.3g} particle-steps/s")
+        print(f"  LIGGGHTS  {p} rank{'s' if p > 1 else ' '}  : {v['particle_steps_per_s']:.3g} "
+              f"particle-steps/s, {v['contacts_per_particle_start']:.2f} -> "
+              f"{v['contacts_per_particle_end']:.2f} contacts per particle")
     print(f"  ratio (best silodem / best LIGGGHTS): {best_ours / best_theirs:.2f}")
     result = {"particles": len(rows), "steps": a.steps, "silodem": ours, "liggghts": theirs,
               "ratio": best_ours / best_theirs}
