@@ -555,9 +555,11 @@ void BM_StepRebuild(benchmark::State& state) {
   report(state, sim, builds);
 }
 
+// 1e4 to 1e6 particles: the cost per particle-step should not grow with the bed (issue 6). The
+// 1e5 and 1e6 beds take about 1 and 10 minutes to settle; filter them out for a quick run.
 BENCHMARK(BM_Step)
     ->ArgNames({"particles", "omp_threads"})
-    ->ArgsProduct({{50000, 10000}, {1, 2}})
+    ->ArgsProduct({{10000, 50000, 100000, 1000000}, {1, 2}})
     ->UseRealTime()
     ->MinTime(3.0)
     ->Unit(benchmark::kMillisecond);

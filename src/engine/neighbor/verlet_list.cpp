@@ -25,6 +25,13 @@ void VerletList::stash_history(const ParticleStore& p) {
   saved_pairs_.clear();
   saved_walls_.clear();
   const std::size_t n = offset.empty() ? 0 : offset.size() - 1;
+  // Exact sizes first: the stash exists beside the list during a rebuild, so it sets the peak
+  // memory (a doubling vector would hold up to twice what it needs).
+  std::size_t pairs = 0, walls = 0;
+  for (const auto& s : state) pairs += nonzero(s) ? 1 : 0;
+  for (const auto& s : wall_state) walls += nonzero(s) ? 1 : 0;
+  saved_pairs_.reserve(pairs);
+  saved_walls_.reserve(walls);
   for (std::size_t i = 0; i < n; ++i) {
     for (int e = offset[i]; e < offset[i + 1]; ++e) {
       if (!nonzero(state[e])) continue;
@@ -124,8 +131,8 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
           wall_state[e] = s->s;
     }
   }
-  saved_pairs_.clear();
-  saved_walls_.clear();
+  std::vector<Saved>().swap(saved_pairs_);  // release: the stash lives only during a rebuild
+  std::vector<Saved>().swap(saved_walls_);
   stashed_ = false;
   x_at_build_ = p.x;
   ++builds;
