@@ -53,6 +53,7 @@ class Simulation {
   const ParticleStore& particles() const { return p_; }
   const ContactModel& model() const { return model_; }
   const SimulationSettings& settings() const { return s_; }
+  void set_reorder_every(int n) { s_.reorder_every = n; }  // speed only (benchmarks)
   void set_gravity(const Vec3& g) { s_.gravity = g; }
   void add_wall(std::unique_ptr<Wall> w);
   const WallList& walls() const { return walls_; }
