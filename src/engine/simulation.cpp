@@ -92,8 +92,9 @@ void Simulation::reorder_spatially() {
     r_max = std::max(r_max, p_.radius[i]);
   }
   const double inv_h = 1.0 / std::max(2.0 * r_max, 1e-12);
-  auto cell = [&](double c, double c0) {
-    return std::uint64_t(std::min((c - c0) * inv_h, double(0x1fffff)));
+  auto cell = [&](double c, double c0) {  // clamped; a non-finite position sorts last
+    const double v = (c - c0) * inv_h;
+    return v >= 0.0 && v < double(0x1fffff) ? std::uint64_t(v) : std::uint64_t(0x1fffff);
   };
   std::vector<std::pair<std::uint64_t, std::size_t>> key(n);
   for (std::size_t i = 0; i < n; ++i) {
