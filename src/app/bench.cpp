@@ -181,9 +181,15 @@ int bench_command(const BenchOptions& o) {
   double fill_wall = 0.0;
   bool cached = false;
   if (!o.refill && fs::exists(cache)) {
-    ByteReader r = read_checkpoint(cache.string());
-    sim->load(r);
-    if (!r.done()) throw std::runtime_error("fill cache " + cache.string() + ": unread bytes");
+    try {
+      ByteReader r = read_checkpoint(cache.string());
+      sim->load(r);
+      if (!r.done()) throw std::runtime_error("unread bytes at the end");
+    } catch (const std::exception& e) {
+      throw std::runtime_error(
+          fmt::format("the cached fill {} cannot be read ({}); run again with --refill",
+                      cache.string(), e.what()));
+    }
     cached = true;
     if (!o.json) fmt::print("loaded the fill from {}\n", cache.string());
   } else {

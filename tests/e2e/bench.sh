@@ -60,6 +60,18 @@ for row in rows:
 assert abs(bed["time_step_s"] / check["time_step_s"] - 1) < 1e-12
 PY
 
+# A damaged cache is reported with the way out, and --refill replaces it.
+cache_file=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["cache"])' "$work/first.json")
+printf 'not a fill' > "$cache_file"
+"$bin" bench "$case_file" --threads 1 --steps 5 --json --cache "$work/cache" \
+  > /dev/null 2> "$work/damaged.txt"
+code=$?
+[ "$code" -ne 0 ] || bad "a damaged cache was accepted"
+grep -q -- "--refill" "$work/damaged.txt" || bad "the damaged-cache error does not say --refill: $(cat "$work/damaged.txt")"
+"$bin" bench "$case_file" --threads 1 --steps 5 --json --cache "$work/cache" --refill \
+  > "$work/refilled.json" || bad "--refill exited $?"
+grep -q '"fill_cached" : false' "$work/refilled.json" || bad "--refill did not fill again"
+
 # A generic case (no silo) is refused with exit code 2 and one line naming the file.
 "$bin" bench "$src/tests/data/base.toml" --steps 5 --cache "$work/cache" \
   > "$work/out.txt" 2> "$work/err.txt"
