@@ -267,7 +267,7 @@ bool rest_on_three(const Vec3 c[3], const double s[3], Vec3& p) {
 // highest particle under its site. A gap of 1e-5 d_min is left at each support, so nothing
 // overlaps and the bed starts almost at rest, at a solid fraction of about 0.5.
 Bed lattice_bed(std::size_t n) {
-  constexpr double kGap = 0.05;    // a = (1 + gap) d_max
+  constexpr double kGap = 0.05;  // a = (1 + gap) d_max
   // Bed height / box width, roughly. The 1e6 bed is made flatter: at 1.3 it would be about 100
   // layers deep, and a particle dropped from its top trips the overlap guard while settling.
   const double kAspect = n > 200000 ? 0.3 : 1.3;
