@@ -31,13 +31,6 @@ namespace {
 // Bump when a change to the fill or the particle state would make old cached beds wrong.
 constexpr int kFillCacheVersion = 1;
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 fs::path default_cache_dir() {
   if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "silodem";
   if (const char* h = std::getenv("HOME"); h && *h) return fs::path(h) / ".cache" / "silodem";

@@ -54,13 +54,6 @@ struct SignalGuard {
 
 struct InterruptedFill {};
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The case as the run directory holds it (case.toml + overrides.txt), to detect a changed case.
 std::uint64_t case_hash(const fs::path& out) {
   return text_hash(read_text(out / "case.toml") + "\n--\n" + read_text(out / "overrides.txt"));
