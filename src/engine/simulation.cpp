@@ -252,10 +252,12 @@ void Simulation::compute_forces() {
 #else
     const int tid = 0;
 #endif
+    // The buffers are zeroed by the reduction below as it reads them (one pass over memory
+    // instead of two); only a new size needs a fresh fill.
     auto& fb = f_buf_[tid];
     auto& tb = t_buf_[tid];
-    fb.assign(n, Vec3{});
-    tb.assign(n, Vec3{});
+    if (fb.size() != n) fb.assign(n, Vec3{});
+    if (tb.size() != n) tb.assign(n, Vec3{});
     // Pair contacts (half list), then walls; each thread accumulates into its own buffers.
     with_kernels(model_.pair(0, 0), [&](auto k) { pair_forces<decltype(k)>(tid, guard); });
     with_kernels(model_.wall(0), [&](auto k) { wall_forces<decltype(k)>(tid, guard); });
@@ -267,6 +269,8 @@ void Simulation::compute_forces() {
       for (int k = 0; k < team; ++k) {
         f += f_buf_[k][i];
         t += t_buf_[k][i];
+        f_buf_[k][i] = Vec3{};
+        t_buf_[k][i] = Vec3{};
       }
       p_.f[i] = f;
       p_.t[i] = t;
