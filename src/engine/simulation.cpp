@@ -24,10 +24,9 @@ int thread_count(int requested) {
 }
 
 SILODEM_HOT BodyState body(const ParticleStore& p, std::size_t i) {
-  // I = 2/5 m R^2, the solid sphere of ParticleStore::add (a multiplication where 1 / inv_inertia
-  // would be a division per contact).
-  return {p.x[i],          p.v[i],    p.omega[i],
-          p.radius[i],     p.mass[i], 0.4 * p.mass[i] * p.radius[i] * p.radius[i],
+  // The inertia the integrator uses (infinite for a particle whose rotation is switched off); a
+  // law that does not read it never pays for the division (dispatch.hpp).
+  return {p.x[i],          p.v[i], p.omega[i], p.radius[i], p.mass[i], 1.0 / p.inv_inertia[i],
           p.inv_inertia[i]};
 }
 

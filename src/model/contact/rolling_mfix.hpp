@@ -30,7 +30,9 @@ struct RollingMfix {
                                  double inv_inertia, bool regularize, double dt) {
     const double w2 = norm2(omega);
     const double w_eps = regularize ? 10.0 * magnitude * dt * inv_inertia : 0.0;
-    const double a = w2 > w_eps * w_eps ? -magnitude / std::sqrt(w2) : inertia * (-0.1 / dt);
+    // At rest (w2 = 0) the torque is zero; 0 < w2 <= w_eps^2 needs w_eps > 0, so I is finite.
+    const double rest = w2 > 0.0 ? inertia * (-0.1 / dt) : 0.0;
+    const double a = w2 > w_eps * w_eps ? -magnitude / std::sqrt(w2) : rest;
     return omega * a;
   }
 
