@@ -90,14 +90,16 @@ class Simulation {
   EnergyBudget energy() const;
 
  private:
-  void compute_forces();
+  // Forces and torques of the current positions into p_.f / p_.t; with finish_step, also the
+  // second half-kick of step() (p_.v / p_.omega hold the predictor until then).
+  void compute_forces(bool finish_step);
   // The two halves of compute_forces' parallel region, compiled per law combination
   // (model/contact/dispatch.hpp); orphaned `omp for` loops.
   template <class K>
   void pair_forces(int tid, double guard);
   template <class K>
   void wall_forces(int tid, double guard);
-  void update_neighbors();
+  void update_neighbors(bool moved);  // moved: some particle moved over skin/2
   void reorder_spatially();
   void run_hooks(Phase ph);
   void check_state() const;
@@ -115,8 +117,7 @@ class Simulation {
     long i = -1, j = -1;  // j = -1 - wall index for a wall contact
     double overlap = 0.0;
   };
-  std::vector<OverlapFlag> flags_;     // per thread: the first contact over the overlap guard
-  std::vector<Vec3> v_half_, w_half_;  // half-step velocities of velocity Verlet
+  std::vector<OverlapFlag> flags_;  // per thread: the first contact over the overlap guard
   double time_ = 0.0;
   long steps_ = 0;
   bool initialized_ = false;

@@ -140,7 +140,7 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
 
 bool VerletList::needs_rebuild(const ParticleStore& p) const {
   if (x_at_build_.size() != p.size()) return true;
-  const double limit2 = 0.25 * skin * skin;
+  const double limit2 = move_limit2();
   const std::size_t n = p.size();
   int moved = 0;
 #pragma omp parallel for schedule(static) reduction(| : moved) num_threads(threads) if (n > 256)

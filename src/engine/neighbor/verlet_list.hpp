@@ -20,6 +20,10 @@ class VerletList {
   // reach_over_d: the longest cohesion range beyond contact (fraction of the pair's d_ref).
   void build(const ParticleStore& p, const WallList& walls, double skin, double reach_over_d);
   bool needs_rebuild(const ParticleStore& p) const;
+  // For a caller that checks the displacement itself, in a pass it makes anyway (the
+  // integrator): rebuild when the sizes differ or some |x - x_at_build|^2 > move_limit2().
+  const std::vector<Vec3>& positions_at_build() const { return x_at_build_; }
+  double move_limit2() const { return 0.25 * skin * skin; }
   // Save the current history keyed by ids (call before particles are removed or reordered).
   void stash_history(const ParticleStore& p);
   // Checkpoint: the list as built (its pair order fixes the force summation order, so a resumed
