@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // `silodem run` of a silo case: fill, discharge with probes and ParaView frames, outlet
-// statistics, summary; checkpoints every [simulation] checkpoint_interval s of discharge and on
+// statistics, summary; checkpoints every [simulation] checkpoint_interval s of discharge (or
+// checkpoint_wall_interval s of wall time, if sooner) and on
 // SIGINT/SIGTERM; `--resume DIR` continues from DIR/checkpoint.bin bit for bit.
 #include <fmt/format.h>
 #include <toml++/toml.h>
@@ -214,6 +215,7 @@ class SiloRun {
     control.stop = [] { return g_signal.load() != 0; };
     control.checkpoint = [this] { checkpoint(); };
     control.checkpoint_interval = c_.time.checkpoint_interval;
+    control.checkpoint_wall_interval = c_.time.checkpoint_wall_interval;
     try {
       dis_result_ = dis_->run(
           [&](const DischargeState& s) {

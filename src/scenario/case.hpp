@@ -24,9 +24,10 @@ struct TimeSpec {
   int reorder_every = 0;            // Morton reorder every N list builds (0 = never)
   int threads = 0;                  // 0 = all cores
   std::uint64_t seed = 1;
-  double max_speed = 0.0;             // m/s guard; 0 = derived (silo) or none (generic)
-  double max_overlap = 0.5;           // guard, fraction of the smaller radius; 0 = off
-  double checkpoint_interval = 10.0;  // s of discharge between checkpoints; 0 = signals only
+  double max_speed = 0.0;                   // m/s guard; 0 = derived (silo) or none (generic)
+  double max_overlap = 0.5;                 // guard, fraction of the smaller radius; 0 = off
+  double checkpoint_interval = 10.0;        // s of discharge between checkpoints; 0 = signals only
+  double checkpoint_wall_interval = 600.0;  // s of wall time between checkpoints; 0 = off
   SourcePlace time_step_place, steps_place;
 };
 

@@ -2,6 +2,7 @@
 #include "scenario/discharge.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
@@ -71,6 +72,8 @@ DischargeResult Discharge::run(const DischargeProgress& progress, const Discharg
   DischargeState st;
   st.filled = r_.filled_mass;
   std::vector<std::size_t> remove;
+  using Clock = std::chrono::steady_clock;
+  auto last_checkpoint = Clock::now();
   try {
     for (;;) {
       while (step_in_interval_ < check_every_) {
@@ -110,9 +113,14 @@ DischargeResult Discharge::run(const DischargeProgress& progress, const Discharg
         r_.end = DischargeEnd::TimeLimit;
         break;
       }
-      if (control.checkpoint_interval > 0 && t >= next_checkpoint_) {
-        next_checkpoint_ = t + control.checkpoint_interval;
-        if (control.checkpoint) control.checkpoint();
+      const bool by_time = control.checkpoint_interval > 0 && t >= next_checkpoint_;
+      const bool by_wall = control.checkpoint_wall_interval > 0 &&
+                           std::chrono::duration<double>(Clock::now() - last_checkpoint).count() >=
+                               control.checkpoint_wall_interval;
+      if (by_time) next_checkpoint_ = t + control.checkpoint_interval;
+      if ((by_time || by_wall) && control.checkpoint) {
+        control.checkpoint();
+        last_checkpoint = Clock::now();
       }
     }
   } catch (const SimulationError& e) {

@@ -49,11 +49,14 @@ using DischargeProgress = std::function<void(const DischargeState&)>;
 
 // How a caller steers a long discharge: `stop` is polled after every step (a signal arrived: the
 // run returns with DischargeEnd::Interrupted at once, its state ready to be checkpointed);
-// `checkpoint` is called every `checkpoint_interval` s of discharge (0 = never).
+// `checkpoint` is called every `checkpoint_interval` s of discharge and every
+// `checkpoint_wall_interval` s of wall-clock time, whichever comes first (0 = never). A checkpoint
+// changes nothing in the state, so when it happens does not change the result.
 struct DischargeControl {
   std::function<bool()> stop;
   std::function<void()> checkpoint;
   double checkpoint_interval = 0.0;
+  double checkpoint_wall_interval = 0.0;
 };
 
 // The discharge as a resumable object: open() the valve, run() to the end; save()/load() carry

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end (issue 5): a run killed with SIGKILL in the middle of its discharge and resumed gives
 # outlet.csv, fill.csv, the probe CSVs and the final state bit for bit equal to an uninterrupted
-# run; SIGINT stops a run within a second with a checkpoint and a message, and it resumes; a
-# changed case file is refused on resume unless --force.
+# run, also when the checkpoints come by wall-clock time; SIGINT stops a run within a second with
+# a checkpoint and a message, and it resumes; a changed case file is refused on resume unless
+# --force.
 set -u
 bin=$1
 src=$2
@@ -48,6 +49,24 @@ grep -q '"complete" : true' "$work/b/summary.json" || bad "resumed run: summary.
 [ ! -e "$work/b/checkpoint.bin" ] || bad "a complete run keeps no checkpoint"
 "$bin" run --resume "$work/b" > /dev/null 2> "$work/b3.err"
 [ $? -eq 2 ] && grep -q "nothing to resume" "$work/b3.err" || bad "resuming a complete run: $(cat "$work/b3.err")"
+
+# Checkpoints by wall-clock time alone (none by simulated time): a SIGKILL 2 s into the discharge
+# resumes from after t = 0, and the checkpoints, taken at steps that depend on the machine's
+# speed, leave the result bit for bit unchanged.
+wall_args=("${args[@]}" --set simulation.checkpoint_interval=0 --set simulation.checkpoint_wall_interval=0.3)
+"$bin" run "$case" --out "$work/e" "${wall_args[@]}" > "$work/e.log" 2>&1 &
+pid=$!
+wait_for_discharge "$work/e" 2 || bad "run e never reached its discharge"
+kill -9 $pid
+wait $pid 2>/dev/null
+[ -f "$work/e/outlet.csv" ] && bad "run e finished before it was killed (make it longer)"
+"$bin" run --resume "$work/e" > "$work/e2.log" 2>&1 || bad "resume of e exited $?: $(tail -2 "$work/e2.log")"
+t_resumed=$(sed -n 's/.*resumed at t = \([0-9.]*\) s.*/\1/p' "$work/e2.log")
+awk -v t="${t_resumed:-0}" 'BEGIN { exit !(t > 0) }' ||
+  bad "e resumed at t = 0: no checkpoint by wall time: $(grep resumed "$work/e2.log")"
+for f in outlet.csv final_state.bin probe_slab.csv; do
+  cmp -s "$work/a/$f" "$work/e/$f" || bad "checkpoints by wall time: $f differs from the uninterrupted run"
+done
 
 # SIGINT: exits within a second with a message and a checkpoint; resumes to the same result.
 "$bin" run "$case" --out "$work/c" "${args[@]}" > "$work/c.log" 2>&1 &

@@ -324,6 +324,7 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     c.time.max_speed = v.number("max_speed");
     c.time.max_overlap = v.number("max_overlap");
     c.time.checkpoint_interval = v.number("checkpoint_interval");
+    c.time.checkpoint_wall_interval = v.number("checkpoint_wall_interval");
     c.time.time_step_place = v.places.count("time_step") ? v.places.at("time_step") : v.place;
     c.time.steps_place = v.place;
   }

@@ -68,6 +68,14 @@ const std::vector<Section>& sections() {
                .with_default(10)
                .at_least(0)
                .at_most(1e6),
+           F::number(
+               "checkpoint_wall_interval",
+               "wall-clock time between checkpoints of a silo discharge, whichever of the two "
+               "comes first (a run killed without a signal loses at most this); 0 = off",
+               "s")
+               .with_default(600)
+               .at_least(0)
+               .at_most(1e6),
        }},
       {"coarse_graining",
        "coarse-graining factor and scaling policies (PHYSICS.md 1)",

@@ -126,8 +126,8 @@ TEST(ContactHistory, SurvivesMortonReorder) {
 TEST(Reorder, FreeFlightIsExactWhileParticlesAreSortedEveryBuild) {
   // Two spheres fly past each other (no contact, no gravity), with a skin so small that the list
   // is rebuilt, and the particles re-sorted, every few steps; their Morton order swaps midway.
-  // Each must still move exactly with its own velocity: the sort carries every per-particle
-  // array, including the half-step velocities of the step in progress.
+  // Each must still move exactly with its own velocity: the sort happens in the middle of a step
+  // and must carry everything the rest of the step reads per particle.
   test::Laws l;
   l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
   SimulationSettings s;
