@@ -169,9 +169,13 @@ void Simulation::pair_forces(int tid, double guard) {
   auto& fb = f_buf_[std::size_t(tid)];
   auto& tb = t_buf_[std::size_t(tid)];
   // The buffers are summed in thread order afterwards, so a run is bitwise reproducible for a
-  // given thread count.
+  // given thread count. The range of indices this thread writes, [lo, hi), tells the reduction
+  // which parts of the buffer to read: a thread's partners j lie mostly near its own i.
+  std::size_t lo = n, hi = 0;
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
+    lo = std::min(lo, i);
+    hi = std::max(hi, i + 1);
     const int mi = p_.material[i];
     const BodyState bi = body(p_, i);
     for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
@@ -193,8 +197,12 @@ void Simulation::pair_forces(int tid, double guard) {
       fb[j] -= r.force_i;
       tb[i] += r.torque_i;
       tb[j] += r.torque_j;
+      hi = std::max(hi, std::size_t(j) + 1);
     }
   }
+  // Read after the barriers that end this loop and the wall loop. The wall loop writes only its
+  // own i, and two static loops over the same n give each thread the same i (OpenMP 5.0, 2.9.2).
+  written_[std::size_t(tid)] = {lo, hi};
 }
 
 // Walls: each particle belongs to one thread, which writes into its own buffers too.
@@ -237,6 +245,7 @@ void Simulation::compute_forces(bool finish_step) {
     t_buf_.resize(std::size_t(nt));
   }
   flags_.assign(std::size_t(nt), OverlapFlag{});
+  written_.assign(std::size_t(nt), {0, 0});
   const double guard = s_.max_overlap > 0 ? s_.max_overlap : 1e300;
   const double half = 0.5 * s_.dt;
   int team = 1;
@@ -264,6 +273,7 @@ void Simulation::compute_forces(bool finish_step) {
       Vec3 f = s_.gravity * p_.mass[i] + p_.f_ext[i];
       Vec3 t;
       for (int k = 0; k < team; ++k) {
+        if (i < written_[k].first || i >= written_[k].second) continue;  // still zero there
         f += f_buf_[k][i];
         t += t_buf_[k][i];
         f_buf_[k][i] = Vec3{};

@@ -7,6 +7,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/hooks.hpp"
@@ -113,6 +114,8 @@ class Simulation {
   VerletList list_;
   std::vector<Hook> hooks_;
   std::vector<std::vector<Vec3>> f_buf_, t_buf_;  // per-thread force/torque buffers
+  // Per thread: the index range its pair loop wrote into its buffers this step.
+  std::vector<std::pair<std::size_t, std::size_t>> written_;
   struct OverlapFlag {
     long i = -1, j = -1;  // j = -1 - wall index for a wall contact
     double overlap = 0.0;
