@@ -282,9 +282,9 @@ void Simulation::compute_forces(bool finish_step) {
       if (finish_step) {
         // The second half-kick of step(): v = v_half + a_new dt/2, with v_half recovered from
         // the predictor p_.v = v_half + a_old dt/2 (a_old still in p_.f).
-        const double hm = half * p_.inv_mass[i], hi = half * p_.inv_inertia[i];
+        const double hm = half * p_.inv_mass[i], hw = half * p_.inv_inertia[i];
         p_.v[i] = (p_.v[i] - p_.f[i] * hm) + f * hm;
-        p_.omega[i] = (p_.omega[i] - p_.t[i] * hi) + t * hi;
+        p_.omega[i] = (p_.omega[i] - p_.t[i] * hw) + t * hw;
       }
       p_.f[i] = f;
       p_.t[i] = t;
