@@ -16,8 +16,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iterator>
@@ -498,7 +498,7 @@ const ContactModel& model() {
 }
 
 // ---- the settled bed, cached on disk --------------------------------------------------------
-// Settling the 1e6 bed takes about 8 minutes, longer than timing it, so the settled state is kept
+// Settling the 1e6 bed takes 10-18 minutes, longer than timing it, so the settled state is kept
 // in $BENCH_STEP_CACHE (default ~/.cache/silodem; "0" = off) as bench_step-bed-v<V>-<n>.bin and
 // reused by later runs, including runs of other commits, which then time the same bed. Bump
 // kBedVersion when the lattice, the coals or the settling change.
@@ -568,7 +568,8 @@ const Bed& settled_bed(std::size_t n) {
   const std::string path = bed_cache_path(n);
   Bed bed;
   if (!path.empty() && load_bed(path, n, bed)) {
-    std::fprintf(stderr, "bench_step: %zu particles: settled bed from %s\n", n, path.c_str());
+    std::fprintf(stderr, "bench_step: %zu particles: settled bed from %s (solid fraction %.3f)\n",
+                 n, path.c_str(), solid_fraction(bed));
   } else {
     bed = settle(n, model());
     if (!path.empty()) store_bed(path, bed);
@@ -636,7 +637,7 @@ void BM_StepRebuild(benchmark::State& state) {
 }
 
 // 1e4 to 1e6 particles: the cost per particle-step should not grow with the bed (issue 6). The
-// 1e5 and 1e6 beds take about 1 and 8 minutes to settle the first time (then they are cached).
+// 1e5 and 1e6 beds take about 1 and 10-18 minutes to settle the first time (then they are cached).
 BENCHMARK(BM_Step)
     ->ArgNames({"particles", "omp_threads"})
     ->ArgsProduct({{10000, 50000, 100000, 1000000}, {1, 2}})

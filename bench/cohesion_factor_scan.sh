@@ -10,6 +10,9 @@
 # Long: about 25 minutes per factor at T = 8 s on 2 idle cores. Not part of the test suite.
 #
 #   FACTORS="0.1 0.2 0.3 0.5 1" T=8 THREADS=2 bash bench/cohesion_factor_scan.sh [SILODEM] [CASE] [OUTDIR]
+#
+# Runs go to OUTDIR/<case>-k4-kn1e4-T<T>-factor-<f>; a complete one is reused, an interrupted one
+# resumed.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-$root/build/release/silodem}
@@ -19,14 +22,22 @@ factors=${FACTORS:-0.1 0.2 0.3 0.5 1}
 t_max=${T:-8}
 threads=${THREADS:-2}
 target=${TARGET_RATE:-0.335}
+[ -x "$bin" ] || { echo "no silodem binary at $bin" >&2; exit 2; }
+[ -f "$case_file" ] || { echo "no case file $case_file" >&2; exit 2; }
 mkdir -p "$out"
 py=/usr/bin/python3; [ -x "$py" ] || py=python3
+# One directory per case, duration and factor, so that a scan with other settings never reuses
+# these runs.
+tag="$(basename "$case_file" .toml)-k4-kn1e4-T$t_max"
+names=()
 
 for f in $factors; do
-  name="factor-$f"
+  name="$tag-factor-$f"
+  names+=("$name")
   [ -f "$out/$name/summary.json" ] && grep -q '"complete" : true' "$out/$name/summary.json" && continue
   if [ -f "$out/$name/checkpoint.bin" ]; then  # interrupted earlier: continue it
-    "$bin" run --resume "$out/$name" --threads "$threads" > "$out/$name.resume.log" 2>&1 || true
+    "$bin" run --resume "$out/$name" --threads "$threads" > "$out/$name.resume.log" 2>&1 ||
+      echo "$name: resume failed, see $out/$name.resume.log" >&2
     continue
   fi
   rm -rf "${out:?}/$name"
@@ -37,17 +48,25 @@ for f in $factors; do
     --set contact.particle_particle.cohesion.factor="$f" \
     --set contact.particle_wall.cohesion.factor="$f" \
     --set discharge.max_time="$t_max" --set discharge.stall_time=2 \
-    --set probes.every=2000 > "$out/$name.log" 2>&1 || true
+    --set probes.every=2000 > "$out/$name.log" 2>&1 ||
+    echo "$name: exit $?, see $out/$name.log" >&2
 done
 
-"$py" - "$out" "$target" <<'PY'
-import csv, glob, json, os, re, sys
-out, target = sys.argv[1], float(sys.argv[2])
+"$py" - "$out" "$target" "${names[@]}" <<'PY'
+import csv, json, os, sys
+out, target, names = sys.argv[1], float(sys.argv[2]), sys.argv[3:]
 rows = []
-for f in glob.glob(os.path.join(out, "factor-*", "summary.json")):
-    d = os.path.dirname(f)
-    factor = float(re.search(r"factor-([0-9.]+)$", d).group(1))
-    s = json.load(open(f))
+for name in names:
+    d = os.path.join(out, name)
+    factor = float(name.rsplit("-factor-", 1)[1])
+    try:
+        s = json.load(open(os.path.join(d, "summary.json")))
+    except (OSError, ValueError):
+        print(f"factor {factor:g}: no summary.json (the run failed early; see {d}.log)")
+        continue
+    if not s.get("complete"):
+        print(f"factor {factor:g}: incomplete run (end: {s.get('end')}), left out")
+        continue
     bottom = None
     oc = os.path.join(d, "outlet.csv")
     if os.path.exists(oc):
@@ -70,7 +89,8 @@ for r in rows:
     fmt = lambda v, p: "-" if v is None else f"{v:.{p}f}"
     print(f"| {r[0]:g} | {fmt(r[1], 3)} | {fmt(r[2], 3)} | {fmt(r[3], 3)} | {r[4]} | {r[5]} | {fmt(r[6], 0)} |")
 def crossing(col, label):
-    pts = [(r[0], r[col] if r[col] is not None else 0.0) for r in rows]
+    # A run that stopped flowing has rate 0 there; a run without such bins is left out.
+    pts = [(r[0], 0.0 if r[4] else r[col]) for r in rows if r[4] or r[col] is not None]
     for (f0, q0), (f1, q1) in zip(pts, pts[1:]):
         if (q0 - target) * (q1 - target) <= 0 and q0 != q1:
             f = f0 + (target - q0) * (f1 - f0) / (q1 - q0)

@@ -126,7 +126,8 @@ void Simulation::step() {
   // half-step velocity (error O(dt), 13% in the restitution at e = 0.1 and dt = t_col/50).
   // The half-step velocity is not stored: the force reduction recovers it as the predictor
   // minus the same a_old dt/2 (compute_forces), and finishes the step there. That saves two
-  // arrays and two passes over memory; it rounds differently from a stored v_half by an ulp.
+  // arrays and two passes over memory; the recovered v_half differs from a stored one by the
+  // rounding of the predictor (half an ulp of |v_half + a_old dt/2|).
   // The same pass checks whether some particle has moved far enough to need a new list.
   const std::vector<Vec3>& xb = list_.positions_at_build();
   const bool check = xb.size() == n;
@@ -197,6 +198,7 @@ void Simulation::pair_forces(int tid, double guard) {
       fb[j] -= r.force_i;
       tb[i] += r.torque_i;
       tb[j] += r.torque_j;
+      lo = std::min(lo, std::size_t(j));  // j > i in the half list; kept safe if that changes
       hi = std::max(hi, std::size_t(j) + 1);
     }
   }

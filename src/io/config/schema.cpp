@@ -71,7 +71,8 @@ const std::vector<Section>& sections() {
            F::number(
                "checkpoint_wall_interval",
                "wall-clock time between checkpoints of a silo discharge, whichever of the two "
-               "comes first (a run killed without a signal loses at most this); 0 = off",
+               "comes first (a discharge killed without a signal loses about this at most; the "
+               "fill is not checkpointed); 0 = off",
                "s")
                .with_default(600)
                .at_least(0)
