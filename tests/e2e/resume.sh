@@ -26,18 +26,27 @@ wait_for_discharge() {
   return 1
 }
 
+# Starts run NAME with the given arguments, kills it with SIGKILL 2 s into its discharge, and
+# resumes it to the end.
+kill_and_resume() {
+  local name=$1; shift
+  "$bin" run "$case" --out "$work/$name" "$@" > "$work/$name.log" 2>&1 &
+  local pid=$!
+  wait_for_discharge "$work/$name" 2 || bad "run $name never reached its discharge"
+  kill -9 $pid
+  wait $pid 2>/dev/null
+  [ -f "$work/$name/outlet.csv" ] && bad "run $name finished before it was killed (make it longer)"
+  grep -q '"complete" : false' "$work/$name/summary.json" ||
+    bad "a killed run's summary.json must say complete: false"
+  ls "$work/$name"/probe_*.csv > /dev/null 2>&1 && bad "a killed run left probe CSVs that look complete"
+  "$bin" run --resume "$work/$name" > "$work/${name}2.log" 2>&1 ||
+    bad "resume of $name exited $?: $(tail -2 "$work/${name}2.log")"
+}
+
 "$bin" run "$case" --out "$work/a" "${args[@]}" > "$work/a.log" 2>&1 || bad "reference run exited $?"
 
 # SIGKILL in the middle, then --resume.
-"$bin" run "$case" --out "$work/b" "${args[@]}" > "$work/b.log" 2>&1 &
-pid=$!
-wait_for_discharge "$work/b" 2 || bad "run b never reached its discharge"
-kill -9 $pid
-wait $pid 2>/dev/null
-[ -f "$work/b/outlet.csv" ] && bad "run b finished before it was killed (make it longer)"
-grep -q '"complete" : false' "$work/b/summary.json" || bad "a killed run's summary.json must say complete: false"
-ls "$work/b"/probe_*.csv > /dev/null 2>&1 && bad "a killed run left probe CSVs that look complete"
-"$bin" run --resume "$work/b" > "$work/b2.log" 2>&1 || bad "resume of b exited $?: $(tail -2 "$work/b2.log")"
+kill_and_resume b "${args[@]}"
 t_resumed=$(sed -n 's/.*resumed at t = \([0-9.]*\) s.*/\1/p' "$work/b2.log")
 awk -v t="${t_resumed:-0}" 'BEGIN { exit !(t > 0) }' ||
   bad "b resumed at t = 0 (no periodic checkpoint?): $(grep resumed "$work/b2.log")"
@@ -53,14 +62,8 @@ grep -q '"complete" : true' "$work/b/summary.json" || bad "resumed run: summary.
 # Checkpoints by wall-clock time alone (none by simulated time): a SIGKILL 2 s into the discharge
 # resumes from after t = 0, and the checkpoints, taken at steps that depend on the machine's
 # speed, leave the result bit for bit unchanged.
-wall_args=("${args[@]}" --set simulation.checkpoint_interval=0 --set simulation.checkpoint_wall_interval=0.3)
-"$bin" run "$case" --out "$work/e" "${wall_args[@]}" > "$work/e.log" 2>&1 &
-pid=$!
-wait_for_discharge "$work/e" 2 || bad "run e never reached its discharge"
-kill -9 $pid
-wait $pid 2>/dev/null
-[ -f "$work/e/outlet.csv" ] && bad "run e finished before it was killed (make it longer)"
-"$bin" run --resume "$work/e" > "$work/e2.log" 2>&1 || bad "resume of e exited $?: $(tail -2 "$work/e2.log")"
+kill_and_resume e "${args[@]}" --set simulation.checkpoint_interval=0 \
+  --set simulation.checkpoint_wall_interval=0.3
 t_resumed=$(sed -n 's/.*resumed at t = \([0-9.]*\) s.*/\1/p' "$work/e2.log")
 awk -v t="${t_resumed:-0}" 'BEGIN { exit !(t > 0) }' ||
   bad "e resumed at t = 0: no checkpoint by wall time: $(grep resumed "$work/e2.log")"
