@@ -129,9 +129,7 @@ void Simulation::step() {
   // arrays and two passes over memory; the recovered v_half differs from a stored one by the
   // rounding of the predictor (half an ulp of |v_half + a_old dt/2|).
   // The same pass checks whether some particle has moved far enough to need a new list.
-  const std::vector<Vec3>& xb = list_.positions_at_build();
-  const bool check = xb.size() == n;
-  const double limit2 = list_.move_limit2();
+  const bool check = list_.built_for(n);
   int moved = check ? 0 : 1;
 #pragma omp parallel for schedule(static) reduction(| : moved) num_threads(s_.threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
@@ -143,7 +141,7 @@ void Simulation::step() {
     p_.v[i] = v_half + dv;
     const Vec3 w_half = p_.omega[i] + dw;
     p_.omega[i] = w_half + dw;
-    if (check) moved |= norm2(x - xb[i]) > limit2 ? 1 : 0;
+    if (check) moved |= list_.moved_far(i, x) ? 1 : 0;
   }
   update_neighbors(moved != 0);
   compute_forces(/*finish_step=*/true);

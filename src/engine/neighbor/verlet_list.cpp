@@ -139,12 +139,11 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
 }
 
 bool VerletList::needs_rebuild(const ParticleStore& p) const {
-  if (x_at_build_.size() != p.size()) return true;
-  const double limit2 = move_limit2();
+  if (!built_for(p.size())) return true;
   const std::size_t n = p.size();
   int moved = 0;
 #pragma omp parallel for schedule(static) reduction(| : moved) num_threads(threads) if (n > 256)
-  for (std::size_t i = 0; i < n; ++i) moved |= norm2(p.x[i] - x_at_build_[i]) > limit2 ? 1 : 0;
+  for (std::size_t i = 0; i < n; ++i) moved |= moved_far(i, p.x[i]) ? 1 : 0;
   return moved != 0;
 }
 

@@ -20,10 +20,12 @@ class VerletList {
   // reach_over_d: the longest cohesion range beyond contact (fraction of the pair's d_ref).
   void build(const ParticleStore& p, const WallList& walls, double skin, double reach_over_d);
   bool needs_rebuild(const ParticleStore& p) const;
-  // For a caller that checks the displacement itself, in a pass it makes anyway (the
-  // integrator): rebuild when the sizes differ or some |x - x_at_build|^2 > move_limit2().
-  const std::vector<Vec3>& positions_at_build() const { return x_at_build_; }
-  double move_limit2() const { return 0.25 * skin * skin; }
+  // The test needs_rebuild makes, for a caller that runs it inside a pass it makes anyway (the
+  // integrator): rebuild when !built_for(n) or moved_far(i, x) for some particle.
+  bool built_for(std::size_t n) const { return x_at_build_.size() == n; }
+  bool moved_far(std::size_t i, const Vec3& x) const {
+    return norm2(x - x_at_build_[i]) > 0.25 * skin * skin;  // more than skin / 2
+  }
   // Save the current history keyed by ids (call before particles are removed or reordered).
   void stash_history(const ParticleStore& p);
   // Checkpoint: the list as built (its pair order fixes the force summation order, so a resumed
