@@ -9,6 +9,7 @@
 #include <omp.h>
 #endif
 
+#include "engine/pair_batch.hpp"
 #include "model/contact/dispatch.hpp"
 
 namespace silodem {
@@ -161,12 +162,37 @@ void Simulation::run_until(double t_end) {
 
 // Every coal pair uses the same laws (one [contact.particle_particle] section; only parameters
 // differ), so the kernels chosen for pair (0, 0) serve all pairs; likewise for the walls.
+// The pairs in range go through lane arrays, kLanes at a time (engine/pair_batch.hpp): the same
+// kernels and the same order of the sums as one contact at a time, vectorised.
 template <class K>
 void Simulation::pair_forces(int tid, double guard) {
   const std::size_t n = p_.size();
   const double dt = s_.dt;
+  const int nm = model_.materials();
   auto& fb = f_buf_[std::size_t(tid)];
   auto& tb = t_buf_[std::size_t(tid)];
+  PairWindow& w = windows_[std::size_t(tid)];
+  // Evaluates the pairs in flight, then adds their forces to this thread's buffers and writes
+  // their history back, in list order.
+  auto flush = [&] {
+    for (std::size_t k = 0; k < w.sets.size(); ++k)
+      if (w.sets[k].count > 0) evaluate_lanes<K>(w.params[k], w.sets[k], dt);
+    for (int k = 0; k < w.count; ++k) {
+      const PairWindow::Entry& en = w.entries[k];
+      LaneSet& b = w.sets[std::size_t(en.set)];
+      const int l = en.lane;
+      if (b.overlap[l] > guard * std::min(b.ri[l], b.rj[l]) && flags_[tid].i < 0)
+        flags_[tid] = {long(en.i), long(en.j), b.overlap[l]};
+      const Vec3 f = LaneSet::get(b.f, l);
+      fb[std::size_t(en.i)] += f;
+      fb[std::size_t(en.j)] -= f;
+      tb[std::size_t(en.i)] += LaneSet::get(b.ti, l);
+      tb[std::size_t(en.j)] += LaneSet::get(b.tj, l);
+      list_.state[std::size_t(en.e)] = b.state(l);
+    }
+    for (auto& set : w.sets) set.count = 0;
+    w.count = 0;
+  };
   // The buffers are summed in thread order afterwards, so a run is bitwise reproducible for a
   // given thread count. The range of indices this thread writes, [lo, hi), tells the reduction
   // which parts of the buffer to read: a thread's partners j lie mostly near its own i.
@@ -176,30 +202,31 @@ void Simulation::pair_forces(int tid, double guard) {
     lo = std::min(lo, i);
     hi = std::max(hi, i + 1);
     const int mi = p_.material[i];
-    const BodyState bi = body(p_, i);
+    // i's data in locals: the lane arrays are doubles too, so the compiler could not keep them
+    // in registers across the stores into the lanes.
+    const Vec3 xi = p_.x[i], vi = p_.v[i], wi = p_.omega[i];
+    const double ri = p_.radius[i], m_i = p_.mass[i], inv_ii = p_.inv_inertia[i];
     for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
       const int j = list_.partner[e];
-      const ContactLaw& law = model_.pair(mi, p_.material[j]);
-      const double sum_r = bi.radius + p_.radius[j];
-      const double reach = sum_r * (1.0 + law.cp.reach_over_d);
-      const double d2 = norm2(bi.x - p_.x[j]);
-      ContactState& st = list_.state[e];
-      if (d2 >= reach * reach) {
-        st = ContactState{};
+      const std::size_t uj = std::size_t(j);
+      const int mj = p_.material[uj];
+      const ContactLaw& law = model_.pair(mi, mj);
+      const double reach = (ri + p_.radius[uj]) * (1.0 + law.cp.reach_over_d);
+      if (norm2(xi - p_.x[uj]) >= reach * reach) {
+        list_.state[std::size_t(e)] = ContactState{};
         continue;
       }
-      const ContactGeometry g = pair_geometry(bi, body(p_, j));
-      if (g.overlap > guard * std::min(bi.radius, p_.radius[j]) && flags_[tid].i < 0)
-        flags_[tid] = {long(i), long(j), g.overlap};
-      const ContactResult r = evaluate<K>(law, g, st, dt);
-      fb[i] += r.force_i;
-      fb[j] -= r.force_i;
-      tb[i] += r.torque_i;
-      tb[j] += r.torque_j;
-      lo = std::min(lo, std::size_t(j));  // j > i in the half list; kept safe if that changes
-      hi = std::max(hi, std::size_t(j) + 1);
+      const int set = mi * nm + mj;
+      const int lane = w.sets[std::size_t(set)].add(
+          xi, vi, wi, ri, m_i, inv_ii, p_.x[uj], p_.v[uj], p_.omega[uj], p_.radius[uj], p_.mass[uj],
+          p_.inv_inertia[uj], list_.state[std::size_t(e)]);
+      w.entries[w.count++] = {int(i), j, e, set, lane};
+      if (w.full()) flush();
+      lo = std::min(lo, uj);  // j > i in the half list; kept safe if that changes
+      hi = std::max(hi, uj + 1);
     }
   }
+  flush();
   // Read after the barriers that end this loop and the wall loop. The wall loop writes only its
   // own i, and two static loops over the same n give each thread the same i (OpenMP 5.0, 2.9.2).
   written_[std::size_t(tid)] = {lo, hi};
@@ -245,6 +272,15 @@ void Simulation::compute_forces(bool finish_step) {
     t_buf_.resize(std::size_t(nt));
   }
   flags_.assign(std::size_t(nt), OverlapFlag{});
+  if (windows_.size() != std::size_t(nt)) {
+    const int nm = model_.materials();
+    windows_.assign(std::size_t(nt), PairWindow{});
+    for (auto& w : windows_) {
+      w.sets.resize(std::size_t(nm * nm));
+      for (int a = 0; a < nm; ++a)
+        for (int b = 0; b < nm; ++b) w.params.push_back(law_params(model_.pair(a, b)));
+    }
+  }
   written_.assign(std::size_t(nt), {0, 0});
   const double guard = s_.max_overlap > 0 ? s_.max_overlap : 1e300;
   const double half = 0.5 * s_.dt;

@@ -12,6 +12,7 @@
 
 #include "engine/hooks.hpp"
 #include "engine/neighbor/verlet_list.hpp"
+#include "engine/pair_batch.hpp"
 #include "engine/particle_store.hpp"
 #include "engine/walls/wall.hpp"
 #include "model/contact/contact_model.hpp"
@@ -116,6 +117,7 @@ class Simulation {
   std::vector<std::vector<Vec3>> f_buf_, t_buf_;  // per-thread force/torque buffers
   // Per thread: the index range its pair loop wrote into its buffers this step.
   std::vector<std::pair<std::size_t, std::size_t>> written_;
+  std::vector<PairWindow> windows_;  // per thread: the pairs in flight (engine/pair_batch.hpp)
   struct OverlapFlag {
     long i = -1, j = -1;  // j = -1 - wall index for a wall contact
     double overlap = 0.0;

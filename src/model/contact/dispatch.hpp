@@ -56,8 +56,8 @@ decltype(auto) with_kernels(const ContactLaw& law, F&& f) {
 
 // One contact: all four slots, combined as PHYSICS.md 2-3 say. Clears the history when the
 // surfaces do not touch (history lives as long as the contact).
-template <class K>
-SILODEM_HOT ContactResult evaluate(const ContactLaw& law, const ContactGeometry& g, ContactState& s,
+template <class K, class Law>
+SILODEM_HOT ContactResult evaluate(const Law& law, const ContactGeometry& g, ContactState& s,
                                    double dt) {
   ContactResult r;
   r.cohesion = K::Cohesion::kernel(law.cp, g);

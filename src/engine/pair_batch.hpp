@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// Particle-particle contacts evaluated several at a time (docs/architecture.md, "The pair loop in
+// lanes"). The force loop (simulation.cpp) walks the neighbour list as before, but instead of
+// evaluating each pair in range at once it copies the two bodies and the history into lane arrays
+// (structure of arrays): one LaneSet per contact law, i.e. per coal pair. Every kLanes pairs it
+// evaluates each set in one loop that the compiler vectorises, calling the same evaluate<K> as a
+// single contact (every law is still written once, in its own file), then adds the results to the
+// force buffers in list order. The arithmetic of each lane and the order of the sums are those of
+// the one-contact loop, so the forces are bitwise the same (tests/unit/engine/pair_batch_test.cpp).
+//
+// What keeps the lane loop vectorisable: the law's numbers come from one plain LawParams per set
+// (uniform across the lanes: no gathers, no flags read per lane), the lanes are contiguous arrays,
+// and every kernel is branch-light enough for if-conversion. A law that breaks this still runs,
+// only one lane at a time: check with -fopt-info-vec (bench/README.md).
+#pragma once
+#include <vector>
+
+#include "core/inline.hpp"
+#include "model/contact/contact_model.hpp"
+#include "model/contact/dispatch.hpp"
+
+// Two versions of the lane loop in the portable build, chosen when the program starts: AVX2 (4
+// doubles per instruction) where the CPU has it, the x86-64 baseline (SSE2, 2 doubles) elsewhere.
+// Without FMA in either, both give the same rounding as the scalar code.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__)
+#define SILODEM_LANE_CLONES [[gnu::target_clones("avx2", "default")]]
+#else
+#define SILODEM_LANE_CLONES
+#endif
+
+namespace silodem {
+
+inline constexpr int kLanes = 32;
+
+// The numbers of one contact law, without ContactLaw's names and pointers.
+struct LawParams {
+  NormalParams np;
+  TangentialParams tp;
+  RollingParams rp;
+  CohesionParams cp;
+};
+
+inline LawParams law_params(const ContactLaw& law) {
+  return {law.np, law.tp, law.rp, law.cp};
+}
+
+// Up to kLanes contacts of one law: inputs, the history (read and written back) and outputs.
+struct LaneSet {
+  int count = 0;
+  alignas(64) double xi[3][kLanes], xj[3][kLanes], vi[3][kLanes], vj[3][kLanes];
+  alignas(64) double wi[3][kLanes], wj[3][kLanes];
+  alignas(64) double ri[kLanes], rj[kLanes], mi[kLanes], mj[kLanes], inv_ii[kLanes], inv_ij[kLanes];
+  alignas(64) double hist[6][kLanes];  // tangential spring x, y, z; rolling spring x, y, z
+  alignas(64) double f[3][kLanes], ti[3][kLanes], tj[3][kLanes], overlap[kLanes];
+
+  // Copies one pair in (i's data, j's data, the history); returns its lane.
+  SILODEM_HOT int add(const Vec3& x_i, const Vec3& v_i, const Vec3& w_i, double r_i, double m_i,
+                      double inv_i_i, const Vec3& x_j, const Vec3& v_j, const Vec3& w_j, double r_j,
+                      double m_j, double inv_i_j, const ContactState& s) {
+    const int l = count++;
+    put(xi, l, x_i), put(vi, l, v_i), put(wi, l, w_i);
+    put(xj, l, x_j), put(vj, l, v_j), put(wj, l, w_j);
+    ri[l] = r_i, mi[l] = m_i, inv_ii[l] = inv_i_i;
+    rj[l] = r_j, mj[l] = m_j, inv_ij[l] = inv_i_j;
+    hist[0][l] = s.tangential.x, hist[1][l] = s.tangential.y, hist[2][l] = s.tangential.z;
+    hist[3][l] = s.rolling.x, hist[4][l] = s.rolling.y, hist[5][l] = s.rolling.z;
+    return l;
+  }
+  static Vec3 get(const double (&a)[3][kLanes], int l) { return {a[0][l], a[1][l], a[2][l]}; }
+  ContactState state(int l) const {
+    return {{hist[0][l], hist[1][l], hist[2][l]}, {hist[3][l], hist[4][l], hist[5][l]}};
+  }
+
+ private:
+  static void put(double (&a)[3][kLanes], int l, const Vec3& v) {
+    a[0][l] = v.x, a[1][l] = v.y, a[2][l] = v.z;
+  }
+};
+
+// Evaluates the `count` contacts of one set with the laws K and the numbers `law` (PHYSICS.md
+// 2-3 through evaluate<K>): forces on i, torques on i and j, overlaps, and the new history.
+template <class K>
+SILODEM_LANE_CLONES void evaluate_lanes(const LawParams& law, LaneSet& b, double dt) {
+  const LawParams lp = law;  // read once, before the loop: nothing in it is loaded per lane
+  const int count = b.count;
+#pragma GCC ivdep
+  for (int l = 0; l < count; ++l) {
+    const BodyState bi{{b.xi[0][l], b.xi[1][l], b.xi[2][l]},
+                       {b.vi[0][l], b.vi[1][l], b.vi[2][l]},
+                       {b.wi[0][l], b.wi[1][l], b.wi[2][l]},
+                       b.ri[l],
+                       b.mi[l],
+                       1.0 / b.inv_ii[l],
+                       b.inv_ii[l]};
+    const BodyState bj{{b.xj[0][l], b.xj[1][l], b.xj[2][l]},
+                       {b.vj[0][l], b.vj[1][l], b.vj[2][l]},
+                       {b.wj[0][l], b.wj[1][l], b.wj[2][l]},
+                       b.rj[l],
+                       b.mj[l],
+                       1.0 / b.inv_ij[l],
+                       b.inv_ij[l]};
+    const ContactGeometry g = pair_geometry(bi, bj);
+    ContactState s{{b.hist[0][l], b.hist[1][l], b.hist[2][l]},
+                   {b.hist[3][l], b.hist[4][l], b.hist[5][l]}};
+    const ContactResult r = evaluate<K>(lp, g, s, dt);
+    b.f[0][l] = r.force_i.x, b.f[1][l] = r.force_i.y, b.f[2][l] = r.force_i.z;
+    b.ti[0][l] = r.torque_i.x, b.ti[1][l] = r.torque_i.y, b.ti[2][l] = r.torque_i.z;
+    b.tj[0][l] = r.torque_j.x, b.tj[1][l] = r.torque_j.y, b.tj[2][l] = r.torque_j.z;
+    b.overlap[l] = g.overlap;
+    b.hist[0][l] = s.tangential.x, b.hist[1][l] = s.tangential.y, b.hist[2][l] = s.tangential.z;
+    b.hist[3][l] = s.rolling.x, b.hist[4][l] = s.rolling.y, b.hist[5][l] = s.rolling.z;
+  }
+}
+
+// One thread's pairs in flight: up to kLanes of them in list order, each in the set of its law.
+struct alignas(64) PairWindow {
+  struct Entry {
+    int i, j, e;    // particles and list entry
+    int set, lane;  // where its data are
+  };
+  std::vector<LaneSet> sets;      // one per law (material pair a * n + b)
+  std::vector<LawParams> params;  // the numbers of each set's law
+  Entry entries[kLanes];
+  int count = 0;
+  char pad[64];  // the next thread's window starts on another cache line
+
+  bool full() const { return count == kLanes; }
+};
+
+}  // namespace silodem
