@@ -55,7 +55,8 @@ decltype(auto) with_kernels(const ContactLaw& law, F&& f) {
 }
 
 // One contact: all four slots, combined as PHYSICS.md 2-3 say. Clears the history when the
-// surfaces do not touch (history lives as long as the contact).
+// surfaces do not touch (history lives as long as the contact). Law: anything with the four
+// parameter blocks np, tp, rp, cp (a ContactLaw, or the plain LawParams of the lane loop).
 template <class K, class Law>
 SILODEM_HOT ContactResult evaluate(const Law& law, const ContactGeometry& g, ContactState& s,
                                    double dt) {
