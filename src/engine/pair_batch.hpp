@@ -47,19 +47,21 @@ inline LawParams law_params(const ContactLaw& law) {
 // Up to kLanes contacts of one law: inputs, the history (read and written back) and outputs.
 struct LaneSet {
   int count = 0;
-  alignas(64) double xi[3][kLanes], xj[3][kLanes], vi[3][kLanes], vj[3][kLanes];
+  // d = x_i - x_j (all the geometry needs of the positions: pair_geometry with x_i = d and
+  // x_j = 0 computes d - 0 = d, bitwise), then the velocities and spins.
+  alignas(64) double d[3][kLanes], vi[3][kLanes], vj[3][kLanes];
   alignas(64) double wi[3][kLanes], wj[3][kLanes];
   alignas(64) double ri[kLanes], rj[kLanes], mi[kLanes], mj[kLanes], inv_ii[kLanes], inv_ij[kLanes];
   alignas(64) double hist[6][kLanes];  // tangential spring x, y, z; rolling spring x, y, z
   alignas(64) double f[3][kLanes], ti[3][kLanes], tj[3][kLanes], overlap[kLanes];
 
-  // Copies one pair in (i's data, j's data, the history); returns its lane.
-  SILODEM_HOT int add(const Vec3& x_i, const Vec3& v_i, const Vec3& w_i, double r_i, double m_i,
-                      double inv_i_i, const Vec3& x_j, const Vec3& v_j, const Vec3& w_j, double r_j,
-                      double m_j, double inv_i_j, const ContactState& s) {
+  // Copies one pair in (x_i - x_j, i's data, j's data, the history); returns its lane.
+  SILODEM_HOT int add(const Vec3& x_ij, const Vec3& v_i, const Vec3& w_i, double r_i, double m_i,
+                      double inv_i_i, const Vec3& v_j, const Vec3& w_j, double r_j, double m_j,
+                      double inv_i_j, const ContactState& s) {
     const int l = count++;
-    put(xi, l, x_i), put(vi, l, v_i), put(wi, l, w_i);
-    put(xj, l, x_j), put(vj, l, v_j), put(wj, l, w_j);
+    put(d, l, x_ij), put(vi, l, v_i), put(wi, l, w_i);
+    put(vj, l, v_j), put(wj, l, w_j);
     ri[l] = r_i, mi[l] = m_i, inv_ii[l] = inv_i_i;
     rj[l] = r_j, mj[l] = m_j, inv_ij[l] = inv_i_j;
     hist[0][l] = s.tangential.x, hist[1][l] = s.tangential.y, hist[2][l] = s.tangential.z;
@@ -85,14 +87,14 @@ SILODEM_LANE_CLONES void evaluate_lanes(const LawParams& law, LaneSet& b, double
   const int count = b.count;
 #pragma GCC ivdep
   for (int l = 0; l < count; ++l) {
-    const BodyState bi{{b.xi[0][l], b.xi[1][l], b.xi[2][l]},
+    const BodyState bi{{b.d[0][l], b.d[1][l], b.d[2][l]},
                        {b.vi[0][l], b.vi[1][l], b.vi[2][l]},
                        {b.wi[0][l], b.wi[1][l], b.wi[2][l]},
                        b.ri[l],
                        b.mi[l],
                        1.0 / b.inv_ii[l],
                        b.inv_ii[l]};
-    const BodyState bj{{b.xj[0][l], b.xj[1][l], b.xj[2][l]},
+    const BodyState bj{{0.0, 0.0, 0.0},
                        {b.vj[0][l], b.vj[1][l], b.vj[2][l]},
                        {b.wj[0][l], b.wj[1][l], b.wj[2][l]},
                        b.rj[l],

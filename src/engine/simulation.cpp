@@ -210,15 +210,16 @@ void Simulation::pair_forces(int tid, double guard) {
       const int j = list_.partner[e];
       const std::size_t uj = std::size_t(j);
       const int mj = p_.material[uj];
-      const ContactLaw& law = model_.pair(mi, mj);
-      const double reach = (ri + p_.radius[uj]) * (1.0 + law.cp.reach_over_d);
-      if (norm2(xi - p_.x[uj]) >= reach * reach) {
+      const int set = mi * nm + mj;
+      const double reach =
+          (ri + p_.radius[uj]) * (1.0 + w.params[std::size_t(set)].cp.reach_over_d);
+      const Vec3 d = xi - p_.x[uj];
+      if (norm2(d) >= reach * reach) {
         list_.state[std::size_t(e)] = ContactState{};
         continue;
       }
-      const int set = mi * nm + mj;
       const int lane = w.sets[std::size_t(set)].add(
-          xi, vi, wi, ri, m_i, inv_ii, p_.x[uj], p_.v[uj], p_.omega[uj], p_.radius[uj], p_.mass[uj],
+          d, vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], p_.radius[uj], p_.mass[uj],
           p_.inv_inertia[uj], list_.state[std::size_t(e)]);
       w.entries[w.count++] = {int(i), j, e, set, lane};
       if (w.full()) flush();

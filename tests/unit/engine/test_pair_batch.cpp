@@ -71,7 +71,7 @@ void check_lanes_match(const ContactLaw& law, const std::vector<Pair>& ps) {
     const std::size_t end = std::min(ps.size(), start + kLanes);
     for (std::size_t k = start; k < end; ++k) {
       const Pair& p = ps[k];
-      set.add(p.i.x, p.i.v, p.i.omega, p.i.radius, p.i.mass, p.i.inv_inertia, p.j.x, p.j.v,
+      set.add(p.i.x - p.j.x, p.i.v, p.i.omega, p.i.radius, p.i.mass, p.i.inv_inertia, p.j.v,
               p.j.omega, p.j.radius, p.j.mass, p.j.inv_inertia, p.s);
     }
     with_kernels(
