@@ -6,7 +6,7 @@
 // evaluates each set in one loop that the compiler vectorises, calling the same evaluate<K> as a
 // single contact (every law is still written once, in its own file), then adds the results to the
 // force buffers in list order. The arithmetic of each lane and the order of the sums are those of
-// the one-contact loop, so the forces are bitwise the same (tests/unit/engine/pair_batch_test.cpp).
+// the one-contact loop, so the forces are bitwise the same (tests/unit/engine/test_pair_batch.cpp).
 //
 // What keeps the lane loop vectorisable: the law's numbers come from one plain LawParams per set
 // (uniform across the lanes: no gathers, no flags read per lane), the lanes are contiguous arrays,
