@@ -30,7 +30,7 @@
 
 namespace silodem {
 
-inline constexpr int kLanes = 32;
+inline constexpr int kLanes = 64;
 
 // The numbers of one contact law, without ContactLaw's names and pointers.
 struct LawParams {
