@@ -19,6 +19,14 @@
 namespace silodem::config {
 namespace {
 
+// A TOML number (integer or float) as a double. toml++'s value<double>() of an integer is empty
+// unless the double is exact, so an integer beyond 2^53 (7788888888888888888, found by the
+// fuzzer) would throw bad_optional_access: it is rounded instead, and the range check refuses it.
+double number_of(const toml::node& n) {
+  if (const auto* i = n.as_integer()) return double(i->get());
+  return n.value<double>().value();
+}
+
 struct Reader {
   std::string file;
 
@@ -116,7 +124,7 @@ struct Reader {
       switch (f.kind) {
         case FieldKind::Number: {
           if (!node->is_number()) throw bad_type();
-          v.numbers[f.key] = check_number(node->value<double>().value());
+          v.numbers[f.key] = check_number(number_of(*node));
           break;
         }
         case FieldKind::Integer: {
@@ -149,7 +157,7 @@ struct Reader {
           double c[3];
           for (int i = 0; i < 3; ++i) {
             if (!(*a)[i].is_number()) throw bad_type();
-            c[i] = (*a)[i].value<double>().value();
+            c[i] = number_of((*a)[i]);
             if (!std::isfinite(c[i])) throw InputError(at, full, "components must be finite");
             c[i] *= f.to_si;
           }
@@ -173,7 +181,7 @@ struct Reader {
           std::vector<double> out;
           for (const auto& e : *a) {
             if (!e.is_number()) throw bad_type();
-            const double x = e.value<double>().value();
+            const double x = number_of(e);
             if (!f.in_range(x))
               throw InputError(place(e), full,
                                fmt::format("contains {} which is out of range; allowed {}{}", x,

@@ -95,6 +95,14 @@ TEST(Config, NegativeDiameter) {
                {"coal[0].diameter_mm", "-2.8", "(0, 10000]", "mm"});
 }
 
+TEST(Config, IntegerTooLargeForADoubleIsOutOfRangeNotACrash) {
+  // 7788888888888888888 has no exact double; it once threw bad_optional_access (fuzzer).
+  expect_error(
+      replace(base(), "bulk_density_kg_m3 = 778", "bulk_density_kg_m3 = 7788888888888888888"),
+      "bulk_density_kg_m3 = 7788888888888888888",
+      {"bulk_density_kg_m3", "7788888888888888888", "out of range"});
+}
+
 TEST(Config, MoistureAtOrAbove100) {
   expect_error(replace(base(), "moisture_percent = 8.8", "moisture_percent = 100"),
                "moisture_percent = 100", {"moisture_percent", "= 100", "[0, 100)", "%"});
