@@ -24,6 +24,7 @@ struct BenchOptions {
   std::string cache_dir;   // default: $XDG_CACHE_HOME/silodem or ~/.cache/silodem
   bool refill = false;     // ignore a cached fill (and replace it)
   std::string export_dir;  // write the settled bed (bed.csv, bed.json) here for a peer code
+  std::string from_dir;    // time the discharge of this run directory from its checkpoint
 };
 
 int run_command(const RunOptions& o);

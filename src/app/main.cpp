@@ -67,21 +67,34 @@ int main(int argc, char** argv) {
   bench.case_path = SILODEM_CASES_DIR "/paper/L3-I2.toml";
   auto* bench_cmd = cli.add_subcommand(
       "bench", "time a settled silo bed and the start of its discharge (particle-steps/s, memory)");
-  bench_cmd
-      ->add_option("case", bench.case_path,
-                   "silo case (default: the paper's L3-I2 at k = 3, cases/paper/L3-I2.toml)")
-      ->check(CLI::ExistingFile);
+  auto* bench_case =
+      bench_cmd
+          ->add_option("case", bench.case_path,
+                       "silo case (default: the paper's L3-I2 at k = 3, cases/paper/L3-I2.toml)")
+          ->check(CLI::ExistingFile);
   bench_cmd->add_option("--threads", bench.threads, "OpenMP threads (default: case file, else all)")
       ->check(CLI::Range(1, 1024));
   bench_cmd->add_option("--steps", bench.steps, "steps timed in each phase (default 2000)")
       ->check(CLI::Range(1L, 100000000L));
   bench_cmd->add_flag("--json", bench.json, "print one JSON object");
   bench_cmd->add_option("--set", bench.overrides, "override a case-file value (repeatable)");
-  bench_cmd->add_option("--cache", bench.cache_dir,
-                        "directory of cached fills (default ~/.cache/silodem)");
-  bench_cmd->add_flag("--refill", bench.refill, "fill again instead of loading a cached fill");
-  bench_cmd->add_option("--export-bed", bench.export_dir,
-                        "write the settled bed (bed.csv, bed.json) into this directory");
+  auto* bench_cache = bench_cmd->add_option("--cache", bench.cache_dir,
+                                            "directory of cached fills (default ~/.cache/silodem)");
+  auto* bench_refill =
+      bench_cmd->add_flag("--refill", bench.refill, "fill again instead of loading a cached fill");
+  auto* bench_export =
+      bench_cmd->add_option("--export-bed", bench.export_dir,
+                            "write the settled bed (bed.csv, bed.json) into this directory");
+  bench_cmd
+      ->add_option("--from", bench.from_dir,
+                   "time --steps steps of this run directory's discharge from its checkpoint (a "
+                   "flowing bed, its case as the directory holds it, --set applied on top; the "
+                   "directory is not changed)")
+      ->check(CLI::ExistingDirectory)
+      ->excludes(bench_case)
+      ->excludes(bench_cache)
+      ->excludes(bench_refill)
+      ->excludes(bench_export);
 
   auto* docs_cmd =
       cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");

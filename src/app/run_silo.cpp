@@ -173,12 +173,7 @@ class SiloRun {
   int resume(const fs::path& out, ByteReader& r, std::uint64_t hash) {
     out_ = out;
     case_hash_ = hash;
-    r.tag("FILL");
-    r.get(wall_before_);
-    r.get(fill_.particles), r.get(fill_.mass), r.get(fill_.settle_time);
-    r.get(fill_.max_boundary_offset);
-    const auto nw = r.get<std::uint64_t>();
-    for (std::uint64_t k = 0; k < nw; ++k) fill_.warnings.push_back(r.get<std::string>());
+    read_fill_block(r, wall_before_, fill_);
     sim_->load(r);
     dis_->load(r);
     observers_ = std::make_unique<Observers>(c_, out_, dis_->t0(), r);
@@ -390,45 +385,60 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
   return run.start(out);
 }
 
-int resume_silo(const RunOptions& o) {
-  const fs::path out(o.resume_dir);
+RunCheckpoint open_run_checkpoint(const fs::path& out, bool force, const char* option) {
   const fs::path ck = out / "checkpoint.bin";
   if (!fs::exists(ck)) {
     const std::string s = read_text(out / "summary.json");
-    throw InputError({}, "--resume",
+    throw InputError({}, option,
                      s.find("\"complete\" : true") != std::string::npos ||
                              s.find("\"complete\": true") != std::string::npos
-                         ? fmt::format("'{}' is a complete run: nothing to resume", o.resume_dir)
+                         ? fmt::format("'{}' is a complete run: nothing to resume", out.string())
                          : fmt::format("'{}' has no checkpoint.bin (a run interrupted before "
                                        "its discharge began restarts from the case: silodem "
                                        "run {}/case.toml --out NEW_DIR)",
-                                       o.resume_dir, o.resume_dir));
+                                       out.string(), out.string()));
   }
-  ByteReader r = read_checkpoint(ck.string());
-  const auto hash = r.get<std::uint64_t>();
-  const auto threads = r.get<std::int32_t>();
-  if (hash != case_hash(out) && !o.force)
-    throw InputError({(out / "case.toml").string(), 0, 0}, "--resume",
+  RunCheckpoint rc{{}, {}, {}, read_checkpoint(ck.string()), 0, 0, {}};
+  rc.hash = rc.reader.get<std::uint64_t>();
+  rc.threads = rc.reader.get<std::int32_t>();
+  if (rc.hash != case_hash(out) && !force)
+    throw InputError({(out / "case.toml").string(), 0, 0}, option,
                      "the case file (or overrides.txt) changed since the checkpoint; resuming "
                      "would mix two cases (use --force to resume anyway)");
-  RunOptions opts = o;
-  opts.case_path = (out / "case.toml").string();
-  opts.overrides = overrides_in(out);
+  rc.case_path = (out / "case.toml").string();
+  rc.overrides = overrides_in(out);
   // Relative paths in the case (measured data) are relative to where the case file was.
-  const std::string source = read_text(out / "case_source.txt");
-  const Case c = config::load_case_file(opts.case_path, opts.overrides,
-                                        fs::path(source).parent_path().string());
-  if (!c.silo.present) throw InputError({}, "--resume", "only silo runs are resumable");
+  rc.base_dir = fs::path(read_text(out / "case_source.txt")).parent_path().string();
+  rc.c = config::load_case_file(rc.case_path, rc.overrides, rc.base_dir);
+  if (!rc.c.silo.present) throw InputError({}, option, "only silo runs are resumable");
+  return rc;
+}
+
+void read_fill_block(ByteReader& r, double& wall_before, FillReport& fill) {
+  r.tag("FILL");
+  r.get(wall_before);
+  r.get(fill.particles), r.get(fill.mass), r.get(fill.settle_time);
+  r.get(fill.max_boundary_offset);
+  const auto nw = r.get<std::uint64_t>();
+  for (std::uint64_t k = 0; k < nw; ++k) fill.warnings.push_back(r.get<std::string>());
+}
+
+int resume_silo(const RunOptions& o) {
+  const fs::path out(o.resume_dir);
+  RunCheckpoint rc = open_run_checkpoint(out, o.force, "--resume");
+  RunOptions opts = o;
+  opts.case_path = rc.case_path;
+  opts.overrides = rc.overrides;
   ContactModel model;
-  const CaseReport report = derive_case(c, &model);
-  if (o.threads > 0 && o.threads != threads)
+  const CaseReport report = derive_case(rc.c, &model);
+  if (o.threads > 0 && o.threads != rc.threads)
     fmt::print(stderr,
                "warning: resuming with {} threads, the run had {}: the result will not be bitwise "
                "equal to an uninterrupted run (summation order)\n",
-               o.threads, threads);
-  SiloRun run(opts, c, report, std::move(model), o.threads > 0 ? o.threads : threads);
+               o.threads, rc.threads);
+  SiloRun run(opts, rc.c, report, std::move(model), o.threads > 0 ? o.threads : rc.threads);
   SignalGuard signals;
-  return run.resume(out, r, hash);
+  return run.resume(out, rc.reader, rc.hash);
 }
 
 }  // namespace silodem::app

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "engine/particle_store.hpp"
 
+#include <algorithm>
+#include <numeric>
 #include <stdexcept>
 
 namespace silodem {
@@ -32,6 +34,24 @@ void ParticleStore::remove(std::size_t i) {
   swap_pop(x, i), swap_pop(v, i), swap_pop(omega, i), swap_pop(f, i), swap_pop(t, i);
   swap_pop(f_ext, i), swap_pop(radius, i), swap_pop(mass, i), swap_pop(inv_mass, i);
   swap_pop(inv_inertia, i), swap_pop(material, i), swap_pop(id, i);
+}
+
+std::vector<int> ParticleStore::remove_all(std::vector<std::size_t> idx) {
+  std::sort(idx.begin(), idx.end());
+  idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
+  if (!idx.empty() && idx.back() >= size())
+    throw std::out_of_range("ParticleStore::remove_all: index beyond the last particle");
+  // at[k]: the old index of the particle now at k; mirrors remove()'s swap with the last.
+  std::vector<int> at(size());
+  std::iota(at.begin(), at.end(), 0);
+  std::vector<int> to(size(), -1);
+  for (auto it = idx.rbegin(); it != idx.rend(); ++it) {
+    remove(*it);
+    at[*it] = at.back();
+    at.pop_back();
+  }
+  for (std::size_t k = 0; k < at.size(); ++k) to[std::size_t(at[k])] = int(k);
+  return to;
 }
 
 template <class T>

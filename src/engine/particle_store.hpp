@@ -25,6 +25,10 @@ class ParticleStore {
   std::uint64_t add(const Vec3& pos, const Vec3& vel, const Vec3& spin, double r, double m,
                     int mat);
   void remove(std::size_t i);
+  // Removes the particles at `idx` (any order, duplicates allowed) by remove(), highest index
+  // first, so that a swapped-in particle is never one to remove. Returns where each particle went:
+  // new index by old index, -1 for a removed one.
+  std::vector<int> remove_all(std::vector<std::size_t> idx);
   // Reorders every array: new index k holds the particle that was at order[k] (a permutation).
   void permute(const std::vector<std::size_t>& order);
   double inertia(std::size_t i) const { return 1.0 / inv_inertia[i]; }

@@ -85,6 +85,18 @@ python3 -c "import sys; d = $t1 - $t0; sys.exit(0 if d < 1.0 else 1)" || bad "SI
 grep -q "checkpoint written; continue with: silodem run --resume" "$work/c.log" || bad "SIGINT: no message: $(tail -2 "$work/c.log")"
 [ -f "$work/c/checkpoint.bin" ] || bad "SIGINT: no checkpoint"
 grep -q '"end" : "interrupted"' "$work/c/summary.json" || bad "SIGINT: summary.json does not say interrupted"
+# bench --from times steps of the interrupted discharge from its checkpoint (the state the resume
+# below starts from) and leaves the directory as it was.
+before=$(cd "$work/c" && ls -l --time-style=+%s.%N && md5sum ./*)
+"$bin" bench --from "$work/c" --steps 40 --threads 1 --json > "$work/from.json" 2> "$work/from.err" ||
+  bad "bench --from exited $?: $(cat "$work/from.err")"
+after=$(cd "$work/c" && ls -l --time-style=+%s.%N && md5sum ./*)
+[ "$before" = "$after" ] || bad "bench --from changed the run directory"
+"$bin" bench --from "$work/a" --steps 5 > /dev/null 2> "$work/from_done.err"
+[ $? -eq 2 ] && grep -q -- "--from.*nothing to resume" "$work/from_done.err" ||
+  bad "bench --from a complete run: $(cat "$work/from_done.err")"
+"$bin" bench "$case" --from "$work/c" --steps 5 > /dev/null 2>&1
+[ $? -eq 2 ] || bad "bench --from with a case file too was not refused"
 # A changed case is refused, then accepted with --force... but first resume it unchanged.
 cp -r "$work/c" "$work/d"
 echo "# edited" >> "$work/d/case.toml"
@@ -100,6 +112,21 @@ wait $pid 2>/dev/null
 for f in outlet.csv final_state.bin probe_slab.csv probe_velocity_profile.csv; do
   cmp -s "$work/a/$f" "$work/c/$f" || bad "interrupted + resumed run: $f differs"
 done
+# What bench --from started from is what the resume started from.
+python3 - "$work/from.json" "$work/c2.log" <<'PY' || bad "bench --from: see above"
+import json, re, sys
+b = json.load(open(sys.argv[1]))
+m = re.search(r"resumed at t = ([0-9.]+) s after the valve opened \((\d+) particles", open(sys.argv[2]).read())
+assert m, "no 'resumed at' line"
+assert b["steps"] == 40 and b["threads"] == 1, b
+assert f'{b["discharge_time_start_s"]:.3f}' == m.group(1), (b["discharge_time_start_s"], m.group(1))
+assert b["particles_start"] == int(m.group(2)), (b["particles_start"], m.group(2))
+assert 0 < b["particles_end"] <= b["particles_start"], b
+assert b["discharge_particle_steps_per_s"] > 0 and b["wall_s_per_simulated_s"] > 0, b
+for key in ("neighbor_rebuilds", "list_pairs_per_particle", "contacts_per_particle",
+            "stepping_peak_rss_bytes"):
+    assert key in b, key
+PY
 
 [ $fail -eq 0 ] && echo "e2e resume ok"
 exit $fail

@@ -2,6 +2,12 @@
 #include "engine/neighbor/verlet_list.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace silodem {
 namespace {
@@ -12,8 +18,26 @@ bool nonzero(const ContactState& s) {
 ContactState flipped(const ContactState& s) {
   return {-s.tangential, -s.rolling};
 }
-bool key_less(std::uint64_t a1, std::uint64_t b1, std::uint64_t a2, std::uint64_t b2) {
+bool key_less(int a1, int b1, int a2, int b2) {
   return a1 != a2 ? a1 < a2 : b1 < b2;
+}
+
+std::uint64_t ids_hash(const ParticleStore& p, std::size_t n) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;  // FNV-1a over whole ids: enough to catch a mix-up
+  for (std::size_t i = 0; i < n; ++i) h = (h ^ p.id[i]) * 0x100000001b3ULL;
+  return h ^ n;
+}
+
+// This thread's share [begin, end) of n particles: contiguous and in thread order, so that the
+// buffers concatenate into the list in index order.
+std::pair<std::size_t, std::size_t> my_share(std::size_t n) {
+#ifdef _OPENMP
+  const std::size_t t = std::size_t(omp_get_thread_num()),
+                    team = std::size_t(omp_get_num_threads());
+#else
+  const std::size_t t = 0, team = 1;
+#endif
+  return {n * t / team, n * (t + 1) / team};
 }
 
 }  // namespace
@@ -22,9 +46,13 @@ void VerletList::stash_history(const ParticleStore& p) {
   // Already stashed since the last build (e.g. two removals in one step): the list no longer
   // matches the particle indices, and the stash already holds everything.
   if (stashed_) return;
+  const std::size_t n = offset.empty() ? 0 : offset.size() - 1;
+  if (check_ids_ && (n > p.size() || ids_hash(p, n) != ids_hash_))
+    throw std::logic_error(
+        "VerletList: particles were removed or reordered without stash_history() and "
+        "renumber() (Simulation::remove_particles does both)");
   saved_pairs_.clear();
   saved_walls_.clear();
-  const std::size_t n = offset.empty() ? 0 : offset.size() - 1;
   // Exact sizes first: the stash exists beside the list during a rebuild, so it sets the peak
   // memory (a doubling vector would hold up to twice what it needs).
   std::size_t pairs = 0, walls = 0;
@@ -32,23 +60,69 @@ void VerletList::stash_history(const ParticleStore& p) {
   for (const auto& s : wall_state) walls += nonzero(s) ? 1 : 0;
   saved_pairs_.reserve(pairs);
   saved_walls_.reserve(walls);
+  // In list order, which is (i, j) order: sorted without sorting.
   for (std::size_t i = 0; i < n; ++i) {
-    for (int e = offset[i]; e < offset[i + 1]; ++e) {
-      if (!nonzero(state[e])) continue;
-      const std::uint64_t a = p.id[i], b = p.id[partner[e]];
-      if (a < b)
-        saved_pairs_.push_back({a, b, state[e]});
-      else
-        saved_pairs_.push_back({b, a, flipped(state[e])});
-    }
+    for (int e = offset[i]; e < offset[i + 1]; ++e)
+      if (nonzero(state[e])) saved_pairs_.push_back({int(i), partner[e], state[e]});
     for (int e = wall_offset[i]; e < wall_offset[i + 1]; ++e)
-      if (nonzero(wall_state[e]))
-        saved_walls_.push_back({p.id[i], std::uint64_t(wall[e]), wall_state[e]});
+      if (nonzero(wall_state[e])) saved_walls_.push_back({int(i), wall[e], wall_state[e]});
   }
-  auto less = [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); };
-  std::sort(saved_pairs_.begin(), saved_pairs_.end(), less);
-  std::sort(saved_walls_.begin(), saved_walls_.end(), less);
   stashed_ = true;
+}
+
+namespace {
+
+// Applies old_to_new to a stash sorted by (a, b) and sorts it again. Entries of removed particles
+// go; a pair whose order turned is flipped. After a removal only the few particles swapped into
+// the holes move: their entries are sorted on their own and merged in, without a second copy of
+// the stash; after a reordering nearly all move, and the whole stash is sorted in place.
+template <class Saved>
+void renumber_stash(std::vector<Saved>& v, const std::vector<int>& to, bool pairs) {
+  auto less = [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); };
+  auto map = [&](int k) {
+    if (k < 0 || std::size_t(k) >= to.size())
+      throw std::logic_error("VerletList::renumber: the map does not cover the stash");
+    return to[std::size_t(k)];
+  };
+  std::size_t changed = 0;
+  for (const Saved& s : v) changed += (map(s.a) != s.a || (pairs && map(s.b) != s.b)) ? 1 : 0;
+  std::vector<Saved> moved;
+  const bool few = changed <= v.size() / 4;
+  if (few) moved.reserve(changed);
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < v.size(); ++k) {
+    const Saved s = v[k];
+    const int a = map(s.a), b = pairs ? map(s.b) : s.b;
+    if (a < 0 || b < 0) continue;
+    Saved t = (!pairs || a < b) ? Saved{a, b, s.s} : Saved{b, a, flipped(s.s)};
+    if (few && (a != s.a || b != s.b))
+      moved.push_back(t);
+    else
+      v[kept++] = t;
+  }
+  v.resize(kept);
+  if (!few) {
+    std::sort(v.begin(), v.end(), less);
+    return;
+  }
+  // Merge the sorted `moved` into v from the back.
+  std::sort(moved.begin(), moved.end(), less);
+  v.resize(kept + moved.size());
+  std::size_t i = kept, j = moved.size(), w = v.size();
+  while (j > 0) {
+    if (i > 0 && less(moved[j - 1], v[i - 1]))
+      v[--w] = v[--i];
+    else
+      v[--w] = moved[--j];
+  }
+}
+
+}  // namespace
+
+void VerletList::renumber(const std::vector<int>& old_to_new) {
+  if (!stashed_) throw std::logic_error("VerletList::renumber without stash_history");
+  renumber_stash(saved_pairs_, old_to_new, /*pairs=*/true);
+  renumber_stash(saved_walls_, old_to_new, /*pairs=*/false);
 }
 
 void VerletList::build(const ParticleStore& p, const WallList& walls, double skin_,
@@ -61,32 +135,44 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   const double cut_max = 2.0 * r_max * (1.0 + reach_over_d) + skin;
   grid_.build(p.x, cut_max, 8 * n + 64);
 
-  // Two passes over i (count, then fill) give a CSR list whose order depends only on the
-  // particle order, not on the thread count.
-  std::vector<int> count(n + 1, 0);
-  auto visit = [&](std::size_t i, auto&& emit) {
-    grid_.for_each_near(p.x[i], [&](int j) {
-      if (j <= int(i)) return;
-      const double cut = (p.radius[i] + p.radius[j]) * (1.0 + reach_over_d) + skin;
-      if (norm2(p.x[i] - p.x[j]) < cut * cut) emit(j);
-    });
-  };
-#pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    int c = 0;
-    visit(i, [&](int) { ++c; });
-    count[i + 1] = c;
-  }
+  // One pass over the grid: each thread lists the partners of its share of i, each i's sorted
+  // (cell order is arbitrary; index order is canonical), into its own buffer; the buffers then
+  // concatenate into the CSR list in thread order. The list depends only on the particle order,
+  // not on the thread count.
+  const int nt = n > 256 ? std::max(1, threads) : 1;
+  std::vector<std::vector<int>> mine(static_cast<std::size_t>(nt));
   offset.assign(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) offset[i + 1] = offset[i] + count[i + 1];
-  partner.assign(offset[n], 0);
-#pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
-  for (std::size_t i = 0; i < n; ++i) {
-    std::vector<int> mine;
-    visit(i, [&](int j) { mine.push_back(j); });
-    std::sort(mine.begin(), mine.end());  // cell order is arbitrary; index order is canonical
-    std::copy(mine.begin(), mine.end(), partner.begin() + offset[i]);
+#pragma omp parallel num_threads(nt)
+  {
+    const auto [begin, end] = my_share(n);
+#ifdef _OPENMP
+    std::vector<int>& out = mine[std::size_t(omp_get_thread_num())];
+#else
+    std::vector<int>& out = mine[0];
+#endif
+    std::vector<int> near;
+    for (std::size_t i = begin; i < end; ++i) {
+      near.clear();
+      const Vec3 xi = p.x[i];
+      const double ri = p.radius[i];
+      grid_.for_each_near(xi, [&](int j) {
+        if (j <= int(i)) return;
+        const double cut = (ri + p.radius[j]) * (1.0 + reach_over_d) + skin;
+        if (norm2(xi - p.x[j]) < cut * cut) near.push_back(j);
+      });
+      std::sort(near.begin(), near.end());
+      offset[i + 1] = int(near.size());
+      out.insert(out.end(), near.begin(), near.end());
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t i = 0; i < n; ++i) offset[i + 1] += offset[i];
+      partner.resize(std::size_t(offset[n]));
+    }
+    std::copy(out.begin(), out.end(), partner.begin() + offset[begin]);
   }
+  std::vector<std::vector<int>>().swap(mine);
 
   // Wall candidates.
   std::vector<int> wcount(n + 1, 0);
@@ -109,33 +195,46 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
       if (walls[k]->enabled && walls[k]->may_touch(p.x[i], limit)) wall[e++] = int(k);
   }
 
-  // Re-attach the history by stable ids.
-  state.assign(partner.size(), ContactState{});
-  wall_state.assign(wall.size(), ContactState{});
-  if (!saved_pairs_.empty() || !saved_walls_.empty()) {
-    auto find = [](const std::vector<Saved>& v, std::uint64_t a, std::uint64_t b) -> const Saved* {
-      auto it = std::lower_bound(
-          v.begin(), v.end(), Saved{a, b, {}},
-          [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); });
-      return (it != v.end() && it->a == a && it->b == b) ? &*it : nullptr;
-    };
-#pragma omp parallel for schedule(static) num_threads(threads) if (n > 256)
-    for (std::size_t i = 0; i < n; ++i) {
-      for (int e = offset[i]; e < offset[i + 1]; ++e) {
-        const std::uint64_t a = p.id[i], b = p.id[partner[e]];
-        if (const Saved* s = a < b ? find(saved_pairs_, a, b) : find(saved_pairs_, b, a))
-          state[e] = a < b ? s->s : flipped(s->s);
-      }
-      for (int e = wall_offset[i]; e < wall_offset[i + 1]; ++e)
-        if (const Saved* s = find(saved_walls_, p.id[i], std::uint64_t(wall[e])))
-          wall_state[e] = s->s;
-    }
-  }
+  attach_history(p);
   std::vector<Saved>().swap(saved_pairs_);  // release: the stash lives only during a rebuild
   std::vector<Saved>().swap(saved_walls_);
   stashed_ = false;
+  check_ids_ = true;
+  ids_hash_ = ids_hash(p, n);
   x_at_build_ = p.x;
   ++builds;
+}
+
+// The stash and the new list are both sorted by (i, j) (walls: (i, wall)): one merge walk.
+void VerletList::attach_history(const ParticleStore& p) {
+  const std::size_t n = p.size();
+  state.assign(partner.size(), ContactState{});
+  wall_state.assign(wall.size(), ContactState{});
+  if (saved_pairs_.empty() && saved_walls_.empty()) return;
+  const int nt = n > 256 ? std::max(1, threads) : 1;
+#pragma omp parallel num_threads(nt)
+  {
+    const auto [begin, end] = my_share(n);
+    auto first = [&](const std::vector<Saved>& v) {
+      return std::lower_bound(v.begin(), v.end(), int(begin),
+                              [](const Saved& s, int i) { return s.a < i; });
+    };
+    auto sp = first(saved_pairs_);
+    auto sw = first(saved_walls_);
+    for (std::size_t i = begin; i < end; ++i) {
+      const int ii = int(i);
+      for (int e = offset[i]; e < offset[i + 1]; ++e) {
+        const int j = partner[e];
+        while (sp != saved_pairs_.end() && key_less(sp->a, sp->b, ii, j)) ++sp;
+        if (sp != saved_pairs_.end() && sp->a == ii && sp->b == j) state[e] = sp->s;
+      }
+      for (int e = wall_offset[i]; e < wall_offset[i + 1]; ++e) {
+        const int k = wall[e];
+        while (sw != saved_walls_.end() && key_less(sw->a, sw->b, ii, k)) ++sw;
+        if (sw != saved_walls_.end() && sw->a == ii && sw->b == k) wall_state[e] = sw->s;
+      }
+    }
+  }
 }
 
 bool VerletList::needs_rebuild(const ParticleStore& p) const {
@@ -147,19 +246,36 @@ bool VerletList::needs_rebuild(const ParticleStore& p) const {
   return moved != 0;
 }
 
+// The stash lives only inside one Simulation call (stash, move the particles, renumber, build),
+// so a checkpoint never holds one; its fields stay in the format (as empty vectors of the
+// original 64-byte records, which the format writes as a zero count) so that older checkpoints
+// load.
+namespace {
+struct SavedInFile {
+  std::uint64_t a, b;
+  ContactState s;
+};
+}  // namespace
+
 void VerletList::save(ByteWriter& w) const {
+  if (stashed_) throw std::logic_error("VerletList::save between stash_history and build");
   w.tag("LIST");
   w.put(offset), w.put(partner), w.put(state), w.put(wall_offset), w.put(wall), w.put(wall_state);
   w.put(builds), w.put(skin), w.put(x_at_build_);
-  w.put(std::uint8_t(stashed_)), w.put(saved_pairs_), w.put(saved_walls_);
+  w.put(std::uint8_t(0)), w.put(std::vector<SavedInFile>{}), w.put(std::vector<SavedInFile>{});
 }
 
 void VerletList::load(ByteReader& r) {
   r.tag("LIST");
   r.get(offset), r.get(partner), r.get(state), r.get(wall_offset), r.get(wall), r.get(wall_state);
   r.get(builds), r.get(skin), r.get(x_at_build_);
-  stashed_ = r.get<std::uint8_t>() != 0;
-  r.get(saved_pairs_), r.get(saved_walls_);
+  const bool stashed = r.get<std::uint8_t>() != 0;
+  std::vector<SavedInFile> pairs, walls;
+  r.get(pairs), r.get(walls);
+  if (stashed || !pairs.empty() || !walls.empty())
+    throw std::runtime_error("checkpoint: the neighbour list holds a stashed contact history");
+  stashed_ = false;
+  check_ids_ = false;  // the ids are not in the list's part of the file: trust the checkpoint
 }
 
 }  // namespace silodem

@@ -2,8 +2,10 @@
 // Verlet neighbour list with a skin, and the contact history stored beside it (no hashing in the
 // force loop). Pairs are a half list (j > i) in CSR form; particle-wall candidates likewise.
 // Rebuilt only when some particle has moved more than skin/2 since the last build, or when the
-// particle set or the walls changed. History is carried over by stable particle ids, so it
-// survives rebuilds and particle removal.
+// particle set or the walls changed. History is carried over by particle index: a rebuild merges
+// the old list's nonzero states into the new one (both are sorted by (i, j)); when particles are
+// removed or reordered, the caller stashes the history first and renumbers it after, so it
+// survives both.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -26,8 +28,13 @@ class VerletList {
   bool moved_far(std::size_t i, const Vec3& x) const {
     return norm2(x - x_at_build_[i]) > 0.25 * skin * skin;  // more than skin / 2
   }
-  // Save the current history keyed by ids (call before particles are removed or reordered).
+  // Keep the current history aside, by particle index (call before particles are removed or
+  // reordered, then renumber() after). Checks that the particles are still the ones the list was
+  // built for (throws std::logic_error if they were removed or reordered behind its back).
   void stash_history(const ParticleStore& p);
+  // The particles were moved: old index k is now old_to_new[k] (-1: removed). Renumbers the
+  // stashed history (its pairs and wall contacts of removed particles are dropped); build() next.
+  void renumber(const std::vector<int>& old_to_new);
   // Checkpoint: the list as built (its pair order fixes the force summation order, so a resumed
   // run continues bit for bit), the history, and the positions at the build.
   void save(ByteWriter& w) const;
@@ -43,11 +50,14 @@ class VerletList {
 
  private:
   struct Saved {
-    std::uint64_t a, b;  // pair: ids with a < b, state oriented as "a relative to b";
-    ContactState s;      // wall: a = particle id, b = wall index
+    int a, b;        // pair: indices a < b, state oriented as "a relative to b";
+    ContactState s;  // wall: a = particle index, b = wall index
   };
-  std::vector<Saved> saved_pairs_, saved_walls_;
+  void attach_history(const ParticleStore& p);
+  std::vector<Saved> saved_pairs_, saved_walls_;  // sorted by (a, b)
   bool stashed_ = false;
+  std::uint64_t ids_hash_ = 0;  // of the particle ids at the build, in index order
+  bool check_ids_ = false;      // ids_hash_ is known (false before a build and after load())
   std::vector<Vec3> x_at_build_;
   CellGrid grid_;
 };

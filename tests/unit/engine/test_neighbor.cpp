@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <stdexcept>
+#include <tuple>
 
 #include "../../physics/helpers.hpp"
 #include "core/random.hpp"
+#include "engine/walls/plane.hpp"
 
 namespace silodem {
 namespace {
@@ -157,6 +160,180 @@ TEST(Reorder, FreeFlightIsExactWhileParticlesAreSortedEveryBuild) {
 }  // namespace silodem
 
 namespace silodem {
+// The history of many contacts through removals, a reordering and rebuilds at several thread
+// counts, against a record kept by stable ids: every pair still listed keeps its own spring
+// (turned when the pair's order in the list turns), every new pair starts from zero. The states
+// are made from the ids, so a state attached to the wrong pair, or with the wrong sign, shows.
+namespace {
+
+ContactState state_of(std::uint64_t lo, std::uint64_t hi) {  // oriented "lo relative to hi"
+  const double a = double(lo) + 1.0, b = double(hi) + 1.0;
+  return {{a, -b, a * b}, {b, a, -a - b}};
+}
+
+// Puts state_of(ids) on every listed pair (oriented by index order) and on every wall candidate.
+void load_states(VerletList& list, const ParticleStore& p) {
+  for (std::size_t i = 0; i + 1 < list.offset.size(); ++i) {
+    for (int e = list.offset[i]; e < list.offset[i + 1]; ++e) {
+      const std::uint64_t a = p.id[i], b = p.id[std::size_t(list.partner[e])];
+      const ContactState s = state_of(std::min(a, b), std::max(a, b));
+      list.state[e] = a < b ? s : ContactState{-s.tangential, -s.rolling};
+    }
+    for (int e = list.wall_offset[i]; e < list.wall_offset[i + 1]; ++e)
+      list.wall_state[e] = state_of(p.id[i], 1000000 + std::uint64_t(list.wall[e]));
+  }
+}
+
+bool same(const ContactState& a, const ContactState& b);
+
+// Counts the listed pairs whose state is right: state_of(ids) for a pair listed before (in
+// `before`, by ids), zero for a new one. Returns {right, kept from before}.
+std::pair<std::size_t, std::size_t> check_states(
+    const VerletList& list, const ParticleStore& p,
+    const std::set<std::pair<std::uint64_t, std::uint64_t>>& before) {
+  std::size_t right = 0, kept = 0;
+  for (std::size_t i = 0; i + 1 < list.offset.size(); ++i)
+    for (int e = list.offset[i]; e < list.offset[i + 1]; ++e) {
+      const std::uint64_t a = p.id[i], b = p.id[std::size_t(list.partner[e])];
+      const bool old = before.count({std::min(a, b), std::max(a, b)}) > 0;
+      ContactState want{};
+      if (old) {
+        const ContactState s = state_of(std::min(a, b), std::max(a, b));
+        want = a < b ? s : ContactState{-s.tangential, -s.rolling};
+        ++kept;
+      }
+      right += same(list.state[e], want) ? 1 : 0;
+    }
+  return {right, kept};
+}
+
+// The listed pairs by ids, and the wall candidates as (id, 1000000 + wall).
+std::set<std::pair<std::uint64_t, std::uint64_t>> listed_ids(const VerletList& list,
+                                                             const ParticleStore& p) {
+  std::set<std::pair<std::uint64_t, std::uint64_t>> s;
+  for (std::size_t i = 0; i + 1 < list.offset.size(); ++i) {
+    for (int e = list.offset[i]; e < list.offset[i + 1]; ++e) {
+      const std::uint64_t a = p.id[i], b = p.id[std::size_t(list.partner[e])];
+      s.insert({std::min(a, b), std::max(a, b)});
+    }
+    for (int e = list.wall_offset[i]; e < list.wall_offset[i + 1]; ++e)
+      s.insert({p.id[i], 1000000 + std::uint64_t(list.wall[e])});
+  }
+  return s;
+}
+
+bool same(const ContactState& a, const ContactState& b) {
+  return a.tangential.x == b.tangential.x && a.tangential.y == b.tangential.y &&
+         a.tangential.z == b.tangential.z && a.rolling.x == b.rolling.x &&
+         a.rolling.y == b.rolling.y && a.rolling.z == b.rolling.z;
+}
+
+// The wall candidates whose state is wrong (state_of(id, wall) if a candidate before, else 0).
+std::size_t wrong_walls(const VerletList& list, const ParticleStore& p,
+                        const std::set<std::pair<std::uint64_t, std::uint64_t>>& before) {
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i + 1 < list.offset.size(); ++i)
+    for (int e = list.wall_offset[i]; e < list.wall_offset[i + 1]; ++e) {
+      const std::uint64_t w = 1000000 + std::uint64_t(list.wall[e]);
+      const ContactState want = before.count({p.id[i], w}) ? state_of(p.id[i], w) : ContactState{};
+      wrong += same(list.wall_state[e], want) ? 0 : 1;
+    }
+  return wrong;
+}
+
+}  // namespace
+
+TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
+  for (int threads : {1, 2, 3}) {
+    ParticleStore p;
+    Random rng(11);
+    for (int i = 0; i < 3000; ++i)
+      p.add({rng.uniform(0, 0.04), rng.uniform(0, 0.04), rng.uniform(0, 0.04)}, {}, {},
+            rng.uniform(1e-3, 2e-3), 1e-5, 0);
+    VerletList list;
+    list.threads = threads;
+    WallList none;  // two walls that about a tenth of the particles touch
+    none.push_back(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{0, 0, 1}));
+    none.push_back(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{1, 0, 0}));
+    list.build(p, none, 4e-4, 0.05);
+    EXPECT_GT(list.wall.size(), 200u);
+    // 1. A rebuild after the particles moved a little: pairs come and go.
+    load_states(list, p);
+    auto before = listed_ids(list, p);
+    for (auto& x : p.x) x += Vec3{rng.uniform(-3e-4, 3e-4), rng.uniform(-3e-4, 3e-4), 0.0};
+    list.build(p, none, 4e-4, 0.05);
+    auto [right, kept] = check_states(list, p, before);
+    EXPECT_EQ(right, list.partner.size()) << threads << " threads, after moving";
+    EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after moving";
+    EXPECT_GT(kept, list.partner.size() / 2);
+    EXPECT_LT(kept, list.partner.size());  // some pairs are new
+    // 2. Removing 200 particles, among them the last ones (whose slots the holes take).
+    load_states(list, p);
+    before = listed_ids(list, p);
+    std::vector<std::size_t> gone;
+    for (int k = 0; k < 200; ++k) gone.push_back(std::size_t(rng.uniform(0, 2999.99)));
+    gone.push_back(p.size() - 1), gone.push_back(p.size() - 2), gone.push_back(5);
+    list.stash_history(p);
+    const std::vector<int> to = p.remove_all(gone);
+    list.renumber(to);
+    list.build(p, none, 4e-4, 0.05);
+    std::tie(right, kept) = check_states(list, p, before);
+    EXPECT_EQ(right, list.partner.size()) << threads << " threads, after removing";
+    EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after removing";
+    EXPECT_GT(kept, list.partner.size() / 2);
+    // 3. A full permutation (reversed order: every pair's orientation turns).
+    load_states(list, p);
+    before = listed_ids(list, p);
+    std::vector<std::size_t> order(p.size());
+    std::vector<int> to_rev(p.size());
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      order[k] = p.size() - 1 - k;
+      to_rev[p.size() - 1 - k] = int(k);
+    }
+    list.stash_history(p);
+    p.permute(order);
+    list.renumber(to_rev);
+    list.build(p, none, 4e-4, 0.05);
+    std::tie(right, kept) = check_states(list, p, before);
+    EXPECT_EQ(right, list.partner.size()) << threads << " threads, after reversing";
+    EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after reversing";
+    EXPECT_EQ(kept, list.partner.size());  // nothing moved: the same pairs
+  }
+}
+
+TEST(ParticleStore, RemoveAllSaysWhereEachParticleWent) {
+  ParticleStore p;
+  for (int i = 0; i < 10; ++i) p.add({double(i), 0, 0}, {}, {}, 1e-3, 1e-5, 0);
+  const std::vector<int> to = p.remove_all({9, 2, 2, 0, 7});
+  ASSERT_EQ(p.size(), 6u);
+  ASSERT_EQ(to.size(), 10u);
+  for (std::uint64_t id = 0; id < 10; ++id) {
+    const bool removed = id == 0 || id == 2 || id == 7 || id == 9;
+    EXPECT_EQ(to[id], removed ? -1 : int(p.index_of(id))) << "id " << id;
+  }
+  EXPECT_THROW(p.remove_all({6}), std::out_of_range);
+}
+
+TEST(VerletList, RefusesParticlesReorderedBehindItsBack) {
+  // The history goes by index: particles moved without stash_history + renumber would attach it
+  // to the wrong pairs, so the next rebuild stops with a logic error instead.
+  ParticleStore p;
+  for (int i = 0; i < 4; ++i) p.add({2e-3 * i, 0, 0}, {}, {}, 1.1e-3, 1e-5, 0);
+  VerletList list;
+  WallList none;
+  list.build(p, none, 1e-4, 0.0);
+  p.permute({1, 0, 2, 3});
+  EXPECT_THROW(list.build(p, none, 1e-4, 0.0), std::logic_error);
+  // Appending particles is fine: the old indices still hold.
+  ParticleStore q;
+  for (int i = 0; i < 4; ++i) q.add({2e-3 * i, 0, 0}, {}, {}, 1.1e-3, 1e-5, 0);
+  VerletList l2;
+  l2.build(q, none, 1e-4, 0.0);
+  q.add({8e-3, 0, 0}, {}, {}, 1.1e-3, 1e-5, 0);
+  EXPECT_NO_THROW(l2.build(q, none, 1e-4, 0.0));
+  EXPECT_EQ(l2.partner.size(), 4u);
+}
+
 namespace {
 
 TEST(VerletList, StrayParticlesAreFoundAndDoNotBreakTheGrid) {
