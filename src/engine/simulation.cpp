@@ -40,6 +40,13 @@ Simulation::Simulation(ContactModel model, SimulationSettings settings)
   omp_set_dynamic(0);  // exactly s_.threads threads: the force summation order depends on it
 #endif
   list_.threads = s_.threads;
+  bool springs = false;
+  for (int a = 0; a < model_.materials(); ++a) {
+    springs = springs || model_.wall(a).rolling_spring;
+    for (int b = 0; b < model_.materials(); ++b)
+      springs = springs || model_.pair(a, b).rolling_spring;
+  }
+  list_.rolling_springs = springs;
 }
 
 void Simulation::add_wall(std::unique_ptr<Wall> w) {
@@ -191,7 +198,7 @@ void Simulation::pair_forces(int tid, double guard) {
       fb[std::size_t(en.j)] -= f;
       tb[std::size_t(en.i)] += LaneSet::get(b.ti, l);
       tb[std::size_t(en.j)] += LaneSet::get(b.tj, l);
-      list_.state[std::size_t(en.e)] = b.state(l);
+      list_.set_state(std::size_t(en.e), b.state(l));
     }
     for (auto& set : w.sets) set.count = 0;
     w.count = 0;
@@ -238,19 +245,19 @@ void Simulation::pair_forces(int tid, double guard) {
       const double dd = norm2(d);
       const double far = (ri + rj) * reach_any;
       if (dd >= far * far) {
-        list_.state[std::size_t(e)] = ContactState{};
+        list_.set_state(std::size_t(e), ContactState{});
         continue;
       }
       const int mj = p_.material[uj];
       const int set = mi * nm + mj;
       const double reach = (ri + rj) * (1.0 + w.params[std::size_t(set)].cp.reach_over_d);
       if (dd >= reach * reach) {
-        list_.state[std::size_t(e)] = ContactState{};
+        list_.set_state(std::size_t(e), ContactState{});
         continue;
       }
       const int lane = w.sets[std::size_t(set)].add(
           d, vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj, p_.mass[uj], p_.inv_inertia[uj],
-          list_.state[std::size_t(e)]);
+          list_.state(std::size_t(e)));
       w.entries[w.count++] = {int(i), j, e, set, lane};
       if (w.full()) flush();
       lo = std::min(lo, uj);  // j > i in the half list; kept safe if that changes
@@ -278,16 +285,17 @@ void Simulation::wall_forces(int tid, double guard) {
     const BodyState bi = body(p_, i);
     for (int e = list_.wall_offset[i]; e < list_.wall_offset[i + 1]; ++e) {
       const Wall& w = *walls_[list_.wall[e]];
-      ContactState& st = list_.wall_state[e];
       WallHit hit;
       if (!w.near(p_.x[i], reach, hit)) {
-        st = ContactState{};
+        list_.set_wall_state(std::size_t(e), ContactState{});
         continue;
       }
+      ContactState st = list_.wall_state(std::size_t(e));
       const ContactGeometry g = wall_geometry(bi, hit.n, hit.distance, w.velocity());
       if (g.overlap > guard * p_.radius[i] && flags_[tid].i < 0)
         flags_[tid] = {long(i), -1 - long(list_.wall[e]), g.overlap};
       const ContactResult r = evaluate<K>(law, g, st, dt);
+      list_.set_wall_state(std::size_t(e), st);
       fb[i] += r.force_i;
       tb[i] += r.torque_i;
     }
@@ -399,17 +407,17 @@ void Simulation::remove_particles(std::vector<std::size_t> idx) {
   // force pass; that is the usual sink convention.
 }
 
-const ContactState* Simulation::contact_state(std::uint64_t a, std::uint64_t b,
-                                              bool* flipped) const {
+std::optional<ContactState> Simulation::contact_state(std::uint64_t a, std::uint64_t b,
+                                                      bool* flipped) const {
   const long ia = p_.index_of(a), ib = p_.index_of(b);
-  if (ia < 0 || ib < 0) return nullptr;
+  if (ia < 0 || ib < 0) return std::nullopt;
   const long lo = std::min(ia, ib), hi = std::max(ia, ib);
   for (int e = list_.offset[lo]; e < list_.offset[lo + 1]; ++e)
     if (list_.partner[e] == hi) {
       if (flipped) *flipped = (lo != ia);
-      return &list_.state[e];
+      return list_.state(std::size_t(e));
     }
-  return nullptr;
+  return std::nullopt;
 }
 
 ContactTally Simulation::contact_tally() const {
@@ -427,7 +435,7 @@ ContactTally Simulation::contact_tally() const {
       const ContactLaw& law = model_.pair(p_.material[i], p_.material[j]);
       const double reach = (p_.radius[i] + p_.radius[j]) * (1.0 + law.cp.reach_over_d);
       if (norm2(p_.x[i] - p_.x[j]) >= reach * reach) continue;
-      ContactState copy = list_.state[e];
+      ContactState copy = list_.state(std::size_t(e));
       const ContactResult r = evaluate_contact(law, pair_geometry(bi, body(p_, j)), copy, s_.dt);
       if (r.touching) ++t.particle_contacts[i], ++t.particle_contacts[j];
       t.cohesion_sum[i] += r.cohesion;
@@ -441,7 +449,7 @@ ContactTally Simulation::contact_tally() const {
       const Wall& w = *walls_[list_.wall[e]];
       WallHit hit;
       if (!w.enabled || !w.near(p_.x[i], reach, hit)) continue;  // (the list may be stale)
-      ContactState copy = list_.wall_state[e];
+      ContactState copy = list_.wall_state(std::size_t(e));
       const ContactResult r =
           evaluate_contact(wl, wall_geometry(bi, hit.n, hit.distance, w.velocity()), copy, s_.dt);
       if (r.touching) ++t.wall_contacts[i];

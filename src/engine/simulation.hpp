@@ -6,6 +6,7 @@
 //   hooks(end)
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,8 +80,9 @@ class Simulation {
   void request_rebuild() { rebuild_pending_ = true; }
   const VerletList& neighbors() const { return list_; }
 
-  // History of the contact between two particles (by stable id), or nullptr.
-  const ContactState* contact_state(std::uint64_t id_a, std::uint64_t id_b, bool* flipped) const;
+  // History of the contact between two particles (by stable id), if they are listed.
+  std::optional<ContactState> contact_state(std::uint64_t id_a, std::uint64_t id_b,
+                                            bool* flipped) const;
   // Checkpoint of the dynamic state: particles, neighbour list with contact history, walls
   // on/off, time and step counter. The model, settings, walls and hooks come from the case.
   void save(ByteWriter& w) const;

@@ -56,16 +56,18 @@ void VerletList::stash_history(const ParticleStore& p) {
   // Exact sizes first: the stash exists beside the list during a rebuild, so it sets the peak
   // memory (a doubling vector would hold up to twice what it needs).
   std::size_t pairs = 0, walls = 0;
-  for (const auto& s : state) pairs += nonzero(s) ? 1 : 0;
-  for (const auto& s : wall_state) walls += nonzero(s) ? 1 : 0;
+  for (std::size_t e = 0; e < spring.size(); ++e) pairs += nonzero(state(e)) ? 1 : 0;
+  for (std::size_t e = 0; e < wall_spring.size(); ++e) walls += nonzero(wall_state(e)) ? 1 : 0;
   saved_pairs_.reserve(pairs);
   saved_walls_.reserve(walls);
   // In list order, which is (i, j) order: sorted without sorting.
   for (std::size_t i = 0; i < n; ++i) {
     for (int e = offset[i]; e < offset[i + 1]; ++e)
-      if (nonzero(state[e])) saved_pairs_.push_back({int(i), partner[e], state[e]});
+      if (const ContactState s = state(std::size_t(e)); nonzero(s))
+        saved_pairs_.push_back({int(i), partner[e], s});
     for (int e = wall_offset[i]; e < wall_offset[i + 1]; ++e)
-      if (nonzero(wall_state[e])) saved_walls_.push_back({int(i), wall[e], wall_state[e]});
+      if (const ContactState s = wall_state(std::size_t(e)); nonzero(s))
+        saved_walls_.push_back({int(i), wall[e], s});
   }
   stashed_ = true;
 }
@@ -208,8 +210,10 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
 // The stash and the new list are both sorted by (i, j) (walls: (i, wall)): one merge walk.
 void VerletList::attach_history(const ParticleStore& p) {
   const std::size_t n = p.size();
-  state.assign(partner.size(), ContactState{});
-  wall_state.assign(wall.size(), ContactState{});
+  spring.assign(partner.size(), Vec3{});
+  wall_spring.assign(wall.size(), Vec3{});
+  roll.assign(rolling_springs ? partner.size() : 0, Vec3{});
+  wall_roll.assign(rolling_springs ? wall.size() : 0, Vec3{});
   if (saved_pairs_.empty() && saved_walls_.empty()) return;
   const int nt = n > 256 ? std::max(1, threads) : 1;
 #pragma omp parallel num_threads(nt)
@@ -226,12 +230,13 @@ void VerletList::attach_history(const ParticleStore& p) {
       for (int e = offset[i]; e < offset[i + 1]; ++e) {
         const int j = partner[e];
         while (sp != saved_pairs_.end() && key_less(sp->a, sp->b, ii, j)) ++sp;
-        if (sp != saved_pairs_.end() && sp->a == ii && sp->b == j) state[e] = sp->s;
+        if (sp != saved_pairs_.end() && sp->a == ii && sp->b == j) set_state(std::size_t(e), sp->s);
       }
       for (int e = wall_offset[i]; e < wall_offset[i + 1]; ++e) {
         const int k = wall[e];
         while (sw != saved_walls_.end() && key_less(sw->a, sw->b, ii, k)) ++sw;
-        if (sw != saved_walls_.end() && sw->a == ii && sw->b == k) wall_state[e] = sw->s;
+        if (sw != saved_walls_.end() && sw->a == ii && sw->b == k)
+          set_wall_state(std::size_t(e), sw->s);
       }
     }
   }
@@ -257,17 +262,38 @@ struct SavedInFile {
 };
 }  // namespace
 
+// The file holds one ContactState per pair (tangential and rolling spring), as it always has.
 void VerletList::save(ByteWriter& w) const {
   if (stashed_) throw std::logic_error("VerletList::save between stash_history and build");
+  auto put_states = [&](std::size_t n, auto&& at) {
+    w.put(std::uint64_t(n));
+    for (std::size_t e = 0; e < n; ++e) w.put(at(e));
+  };
   w.tag("LIST");
-  w.put(offset), w.put(partner), w.put(state), w.put(wall_offset), w.put(wall), w.put(wall_state);
+  w.put(offset), w.put(partner);
+  put_states(spring.size(), [&](std::size_t e) { return state(e); });
+  w.put(wall_offset), w.put(wall);
+  put_states(wall_spring.size(), [&](std::size_t e) { return wall_state(e); });
   w.put(builds), w.put(skin), w.put(x_at_build_);
   w.put(std::uint8_t(0)), w.put(std::vector<SavedInFile>{}), w.put(std::vector<SavedInFile>{});
 }
 
 void VerletList::load(ByteReader& r) {
+  // A rolling spring that this run keeps none of (its laws changed since) is dropped.
+  auto split = [&](const std::vector<ContactState>& in, std::vector<Vec3>& t,
+                   std::vector<Vec3>& rl) {
+    t.resize(in.size());
+    rl.resize(rolling_springs ? in.size() : 0);
+    for (std::size_t e = 0; e < in.size(); ++e) {
+      t[e] = in[e].tangential;
+      if (rolling_springs) rl[e] = in[e].rolling;
+    }
+  };
+  std::vector<ContactState> pairs_in, walls_in;
   r.tag("LIST");
-  r.get(offset), r.get(partner), r.get(state), r.get(wall_offset), r.get(wall), r.get(wall_state);
+  r.get(offset), r.get(partner), r.get(pairs_in), r.get(wall_offset), r.get(wall), r.get(walls_in);
+  split(pairs_in, spring, roll);
+  split(walls_in, wall_spring, wall_roll);
   r.get(builds), r.get(skin), r.get(x_at_build_);
   const bool stashed = r.get<std::uint8_t>() != 0;
   std::vector<SavedInFile> pairs, walls;

@@ -40,10 +40,30 @@ class VerletList {
   void save(ByteWriter& w) const;
   void load(ByteReader& r);
 
-  std::vector<int> offset, partner;  // pairs of i: partner[offset[i] .. offset[i+1])
-  std::vector<ContactState> state;
+  std::vector<int> offset, partner;    // pairs of i: partner[offset[i] .. offset[i+1])
   std::vector<int> wall_offset, wall;  // wall candidates of i
-  std::vector<ContactState> wall_state;
+  // The history of list pair e and of wall candidate e: the tangential spring, and the rolling
+  // spring only if `rolling_springs` (the EPSD law's; the other rolling laws keep none, and
+  // their pairs' rolling spring is always zero). Split so that a run without one does not carry
+  // 24 bytes of zeros per listed pair through every step.
+  ContactState state(std::size_t e) const {
+    return {spring[e], rolling_springs ? roll[e] : Vec3{}};
+  }
+  void set_state(std::size_t e, const ContactState& s) {
+    spring[e] = s.tangential;
+    if (rolling_springs) roll[e] = s.rolling;
+  }
+  ContactState wall_state(std::size_t e) const {
+    return {wall_spring[e], rolling_springs ? wall_roll[e] : Vec3{}};
+  }
+  void set_wall_state(std::size_t e, const ContactState& s) {
+    wall_spring[e] = s.tangential;
+    if (rolling_springs) wall_roll[e] = s.rolling;
+  }
+  std::vector<Vec3> spring, roll, wall_spring, wall_roll;
+  // Keep the rolling springs (set before the first build or load; Simulation sets it from its
+  // contact laws).
+  bool rolling_springs = true;
   long builds = 0;
   double skin = 0.0;
   int threads = 1;  // OpenMP threads for building and checking

@@ -24,6 +24,7 @@ struct ContactLaw {
   RollingParams rp;
   CohesionKernel cohesion = nullptr;
   CohesionParams cp;
+  bool rolling_spring = false;      // the rolling law keeps a spring in the contact history
   std::string law_names[4];         // by Slot, for reports
   int law_index[4] = {0, 0, 0, 0};  // by Slot: position of the law in its list (laws.hpp)
 };

@@ -73,6 +73,7 @@ struct RollingEpsd {
     law.rp.damping_fraction = v.number("damping_ratio");
     law.rp.limit_sees_cohesion = v.flag("limit_sees_cohesion");
     law.rolling = &kernel;
+    law.rolling_spring = true;
   }
 };
 
