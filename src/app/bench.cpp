@@ -170,7 +170,8 @@ int bench_from_checkpoint(const BenchOptions& o) {
   FillReport fill;
   read_fill_block(rc.reader, wall_before, fill);
   sim->load(rc.reader);
-  dis.load(rc.reader);  // the probes' state follows; not needed here
+  dis.load(rc.reader);         // the probes' state follows; not needed here
+  rc.reader = ByteReader({});  // the file's bytes go before the memory is measured
   const std::size_t n0 = sim->particles().size();
   const double t_start = sim->time() - dis.t0();
   const long builds0 = sim->neighbors().builds;
