@@ -236,32 +236,25 @@ void Simulation::pair_forces(int tid, double guard) {
         __builtin_prefetch(&p_.inv_inertia[jp]);
         __builtin_prefetch(&p_.material[jp]);
       }
-      // Most listed pairs out of range fail the test with the longest reach of any coal pair,
-      // before their coals are looked up; the test with the pair's own reach follows. Both
-      // reaches are (r_i + r_j) (1 + reach_over_d), and the first factor is at least the second,
-      // so the first test never drops a pair the second would keep.
+      // Without a branch on "in range" (half the listed pairs in a flowing bed, a coin toss for
+      // the branch predictor): every pair is staged into the next lane of its set and the entry
+      // list, and both counts grow only if it is in range. The history is cleared here and
+      // written back at the flush for the pairs in range.
       const double rj = p_.radius[uj];
       const Vec3 d = xi - p_.x[uj];
-      const double dd = norm2(d);
-      const double far = (ri + rj) * reach_any;
-      if (dd >= far * far) {
-        list_.set_state(std::size_t(e), ContactState{});
-        continue;
-      }
       const int mj = p_.material[uj];
       const int set = mi * nm + mj;
       const double reach = (ri + rj) * (1.0 + w.params[std::size_t(set)].cp.reach_over_d);
-      if (dd >= reach * reach) {
-        list_.set_state(std::size_t(e), ContactState{});
-        continue;
-      }
-      const int lane = w.sets[std::size_t(set)].add(
-          d, vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj, p_.mass[uj], p_.inv_inertia[uj],
-          list_.state(std::size_t(e)));
-      w.entries[w.count++] = {int(i), j, e, set, lane};
+      const int in = norm2(d) >= reach * reach ? 0 : 1;  // a NaN distance counts as in range
+      LaneSet& ls = w.sets[std::size_t(set)];
+      const int lane = ls.stage(d, vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj, p_.mass[uj],
+                                p_.inv_inertia[uj], list_.state(std::size_t(e)));
+      ls.count += in;
+      list_.set_state(std::size_t(e), ContactState{});
+      w.entries[w.count] = {int(i), j, e, set, lane};
+      w.count += in;
       if (w.full()) flush();
-      lo = std::min(lo, uj);  // j > i in the half list; kept safe if that changes
-      hi = std::max(hi, uj + 1);
+      hi = in ? std::max(hi, uj + 1) : hi;  // j > i in the half list
     }
   }
   flush();
