@@ -287,6 +287,19 @@ TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
     EXPECT_EQ(right, list.partner.size()) << threads << " threads, after removing";
     EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after removing";
     EXPECT_GT(kept, list.partner.size() / 2);
+    // 2b. Two removals before one rebuild: the second stash call keeps the first stash, and the
+    // two maps compose.
+    load_states(list, p);
+    before = listed_ids(list, p);
+    list.stash_history(p);
+    list.renumber(p.remove_all({0, 17, p.size() - 1}));
+    list.stash_history(p);  // already stashed: returns at once
+    list.renumber(p.remove_all({3, p.size() - 5}));
+    list.build(p, none, 4e-4, 0.05);
+    std::tie(right, kept) = check_states(list, p, before);
+    EXPECT_EQ(right, list.partner.size()) << threads << " threads, after two removals";
+    EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after two removals";
+    EXPECT_EQ(kept, list.partner.size());  // nothing moved: only pairs that were listed
     // 3. A full permutation (reversed order: every pair's orientation turns).
     load_states(list, p);
     before = listed_ids(list, p);
