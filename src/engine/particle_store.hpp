@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
-// Structure-of-arrays particle state with one owner. Removal swaps the last particle into the
-// hole (O(1)); stable ids survive it, indices do not.
+// Structure-of-arrays particle state with one owner. remove() swaps the last particle into the
+// hole (O(1)); remove_all() keeps the others' order (O(n)); stable ids survive both, indices do
+// not.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -25,9 +26,9 @@ class ParticleStore {
   std::uint64_t add(const Vec3& pos, const Vec3& vel, const Vec3& spin, double r, double m,
                     int mat);
   void remove(std::size_t i);
-  // Removes the particles at `idx` (any order, duplicates allowed) by remove(), highest index
-  // first, so that a swapped-in particle is never one to remove. Returns where each particle went:
-  // new index by old index, -1 for a removed one.
+  // Removes the particles at `idx` (any order, duplicates allowed), keeping the order of the
+  // others (unlike remove()). Returns where each particle went: new index by old index, -1 for a
+  // removed one.
   std::vector<int> remove_all(std::vector<std::size_t> idx);
   // Reorders every array: new index k holds the particle that was at order[k] (a permutation).
   void permute(const std::vector<std::size_t>& order);

@@ -75,9 +75,10 @@ void VerletList::stash_history(const ParticleStore& p) {
 namespace {
 
 // Applies old_to_new to a stash sorted by (a, b) and sorts it again. Entries of removed particles
-// go; a pair whose order turned is flipped. After a removal only the few particles swapped into
-// the holes move: their entries are sorted on their own and merged in, without a second copy of
-// the stash; after a reordering nearly all move, and the whole stash is sorted in place.
+// go; a pair whose order turned is flipped. When only a few particles changed index (swapped into
+// holes), their entries are sorted on their own and merged in, without a second copy of the
+// stash; when most did (a reordering, or an order-keeping removal, which keeps the stash sorted),
+// the whole stash is sorted in place if it needs it.
 template <class Saved>
 void renumber_stash(std::vector<Saved>& v, const std::vector<int>& to, bool pairs) {
   auto less = [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); };
@@ -103,8 +104,8 @@ void renumber_stash(std::vector<Saved>& v, const std::vector<int>& to, bool pair
       v[kept++] = t;
   }
   v.resize(kept);
-  if (!few) {
-    std::sort(v.begin(), v.end(), less);
+  if (!few) {  // an order-keeping removal shifts most indices but keeps the stash sorted
+    if (!std::is_sorted(v.begin(), v.end(), less)) std::sort(v.begin(), v.end(), less);
     return;
   }
   // Merge the sorted `moved` into v from the back.

@@ -34,8 +34,9 @@ const std::vector<Section>& sections() {
                .at_most(5),
            F::integer("reorder_every",
                       "sort the particles along a Morton curve before every N-th neighbour-list "
-                      "build, so that neighbours are close in memory (speed only; 0 = never)")
-               .with_default(0)
+                      "build, so that neighbours are close in memory (speed only: changes the "
+                      "summation order, not the physics; 0 = never)")
+               .with_default(10)
                .at_least(0)
                .at_most(1000000),
            F::integer("threads", "OpenMP threads; 0 = all cores")

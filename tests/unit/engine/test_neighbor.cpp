@@ -108,8 +108,9 @@ TEST(ContactHistory, SurvivesForcedRebuild) {
 }
 
 TEST(ContactHistory, SurvivesRemovalThatReordersParticles) {
-  // Removing the far particle (index 0) swaps b into slot 0: the pair is now stored as (b, a), and
-  // its spring must be carried over with the sign flipped.
+  // Removing the far particle (index 0) moves a and b down by one (remove_all keeps the order;
+  // ManyContactsSurviveRemovalReorderAndRebuildsByIndex below turns pairs around): the spring
+  // must follow the renumbered pair.
   const Loaded alone = loaded_pair(false, false, false);
   const Loaded removed = loaded_pair(false, true, true);
   ASSERT_GT(norm(alone.spring), 0.0);
@@ -300,6 +301,25 @@ TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
     EXPECT_EQ(right, list.partner.size()) << threads << " threads, after two removals";
     EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after two removals";
     EXPECT_EQ(kept, list.partner.size());  // nothing moved: only pairs that were listed
+    // 2c. Two particles trade places (the first and the last): few entries move, and they are
+    // sorted alone and merged in; the pairs of both turn.
+    load_states(list, p);
+    before = listed_ids(list, p);
+    {
+      std::vector<std::size_t> order(p.size());
+      std::vector<int> traded(p.size());
+      for (std::size_t k = 0; k < p.size(); ++k) order[k] = k, traded[k] = int(k);
+      std::swap(order.front(), order.back());
+      std::swap(traded.front(), traded.back());
+      list.stash_history(p);
+      p.permute(order);
+      list.renumber(traded);
+    }
+    list.build(p, none, 4e-4, 0.05);
+    std::tie(right, kept) = check_states(list, p, before);
+    EXPECT_EQ(right, list.partner.size()) << threads << " threads, after a swap";
+    EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after a swap";
+    EXPECT_EQ(kept, list.partner.size());
     // 3. A full permutation (reversed order: every pair's orientation turns).
     load_states(list, p);
     before = listed_ids(list, p);
@@ -330,6 +350,10 @@ TEST(ParticleStore, RemoveAllSaysWhereEachParticleWent) {
     const bool removed = id == 0 || id == 2 || id == 7 || id == 9;
     EXPECT_EQ(to[id], removed ? -1 : int(p.index_of(id))) << "id " << id;
   }
+  // The others keep their order (and their data).
+  const std::vector<std::uint64_t> left = {1, 3, 4, 5, 6, 8};
+  EXPECT_EQ(p.id, left);
+  for (std::size_t k = 0; k < p.size(); ++k) EXPECT_EQ(p.x[k].x, double(p.id[k]));
   EXPECT_THROW(p.remove_all({6}), std::out_of_range);
 }
 
