@@ -211,8 +211,6 @@ void Simulation::pair_forces(int tid, double guard) {
   // larger than the caches the loop otherwise waits for them (1e6 particles: 161 -> 150 ms per
   // step on one thread; no change on the 63k silo bed). Prefetches never fault.
   const std::size_t n_pairs = list_.partner.size();
-  double reach_any = 1.0;  // 1 + the longest reach_over_d of the coal pairs
-  for (const LawParams& lp : w.params) reach_any = std::max(reach_any, 1.0 + lp.cp.reach_over_d);
   constexpr std::size_t PF = 16;
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {

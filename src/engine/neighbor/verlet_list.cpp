@@ -147,7 +147,8 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   offset.assign(n + 1, 0);
 #pragma omp parallel num_threads(nt)
   {
-    const auto [begin, end] = my_share(n);
+    const std::pair<std::size_t, std::size_t> share = my_share(n);
+    const std::size_t begin = share.first, end = share.second;
 #ifdef _OPENMP
     std::vector<int>& out = mine[std::size_t(omp_get_thread_num())];
 #else
@@ -219,7 +220,8 @@ void VerletList::attach_history(const ParticleStore& p) {
   const int nt = n > 256 ? std::max(1, threads) : 1;
 #pragma omp parallel num_threads(nt)
   {
-    const auto [begin, end] = my_share(n);
+    const std::pair<std::size_t, std::size_t> share = my_share(n);
+    const std::size_t begin = share.first, end = share.second;
     auto first = [&](const std::vector<Saved>& v) {
       return std::lower_bound(v.begin(), v.end(), int(begin),
                               [](const Saved& s, int i) { return s.a < i; });
