@@ -74,50 +74,27 @@ void VerletList::stash_history(const ParticleStore& p) {
 
 namespace {
 
-// Applies old_to_new to a stash sorted by (a, b) and sorts it again. Entries of removed particles
-// go; a pair whose order turned is flipped. When only a few particles changed index (swapped into
-// holes), their entries are sorted on their own and merged in, without a second copy of the
-// stash; when most did (a reordering, or an order-keeping removal, which keeps the stash sorted),
-// the whole stash is sorted in place if it needs it.
+// Applies old_to_new to a stash sorted by (a, b), in place, and sorts it again if it needs it.
+// Entries of removed particles go; a pair whose order turned is swapped and flipped. The removal
+// of Simulation keeps the others' order, so after it the stash is still sorted; a reordering needs
+// the sort.
 template <class Saved>
 void renumber_stash(std::vector<Saved>& v, const std::vector<int>& to, bool pairs) {
-  auto less = [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); };
   auto map = [&](int k) {
     if (k < 0 || std::size_t(k) >= to.size())
       throw std::logic_error("VerletList::renumber: the map does not cover the stash");
     return to[std::size_t(k)];
   };
-  std::size_t changed = 0;
-  for (const Saved& s : v) changed += (map(s.a) != s.a || (pairs && map(s.b) != s.b)) ? 1 : 0;
-  std::vector<Saved> moved;
-  const bool few = changed <= v.size() / 4;
-  if (few) moved.reserve(changed);
   std::size_t kept = 0;
   for (std::size_t k = 0; k < v.size(); ++k) {
     const Saved s = v[k];
     const int a = map(s.a), b = pairs ? map(s.b) : s.b;
     if (a < 0 || b < 0) continue;
-    Saved t = (!pairs || a < b) ? Saved{a, b, s.s} : Saved{b, a, flipped(s.s)};
-    if (few && (a != s.a || b != s.b))
-      moved.push_back(t);
-    else
-      v[kept++] = t;
+    v[kept++] = (!pairs || a < b) ? Saved{a, b, s.s} : Saved{b, a, flipped(s.s)};
   }
   v.resize(kept);
-  if (!few) {  // an order-keeping removal shifts most indices but keeps the stash sorted
-    if (!std::is_sorted(v.begin(), v.end(), less)) std::sort(v.begin(), v.end(), less);
-    return;
-  }
-  // Merge the sorted `moved` into v from the back.
-  std::sort(moved.begin(), moved.end(), less);
-  v.resize(kept + moved.size());
-  std::size_t i = kept, j = moved.size(), w = v.size();
-  while (j > 0) {
-    if (i > 0 && less(moved[j - 1], v[i - 1]))
-      v[--w] = v[--i];
-    else
-      v[--w] = moved[--j];
-  }
+  auto less = [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); };
+  if (!std::is_sorted(v.begin(), v.end(), less)) std::sort(v.begin(), v.end(), less);
 }
 
 }  // namespace

@@ -301,8 +301,8 @@ TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
     EXPECT_EQ(right, list.partner.size()) << threads << " threads, after two removals";
     EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after two removals";
     EXPECT_EQ(kept, list.partner.size());  // nothing moved: only pairs that were listed
-    // 2c. Two particles trade places (the first and the last): few entries move, and they are
-    // sorted alone and merged in; the pairs of both turn.
+    // 2c. Two particles trade places (the first and the last): the pairs of both turn, and the
+    // stash is sorted again.
     load_states(list, p);
     before = listed_ids(list, p);
     {
