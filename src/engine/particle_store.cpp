@@ -2,7 +2,6 @@
 #include "engine/particle_store.hpp"
 
 #include <algorithm>
-#include <numeric>
 #include <stdexcept>
 
 namespace silodem {
