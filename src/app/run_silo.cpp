@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "app/observers.hpp"
 #include "app/progress.hpp"
@@ -403,8 +404,12 @@ RunCheckpoint open_run_checkpoint(const fs::path& out, bool force, const char* o
   rc.threads = rc.reader.get<std::int32_t>();
   if (rc.hash != case_hash(out) && !force)
     throw InputError({(out / "case.toml").string(), 0, 0}, option,
-                     "the case file (or overrides.txt) changed since the checkpoint; resuming "
-                     "would mix two cases (use --force to resume anyway)");
+                     std::string_view(option) == "--resume"
+                         ? "the case file (or overrides.txt) changed since the checkpoint; "
+                           "resuming would mix two cases (use --force to resume anyway)"
+                         : "the case file (or overrides.txt) changed since the checkpoint; the "
+                           "state would not be the case's (restore the file and change the "
+                           "case with --set instead)");
   rc.case_path = (out / "case.toml").string();
   rc.overrides = overrides_in(out);
   // Relative paths in the case (measured data) are relative to where the case file was.

@@ -102,6 +102,9 @@ cp -r "$work/c" "$work/d"
 echo "# edited" >> "$work/d/case.toml"
 "$bin" run --resume "$work/d" > /dev/null 2> "$work/d.err"
 [ $? -eq 2 ] && grep -q "changed since the checkpoint" "$work/d.err" || bad "changed case: $(cat "$work/d.err")"
+"$bin" bench --from "$work/d" --steps 5 > /dev/null 2> "$work/d_from.err"
+[ $? -eq 2 ] && grep -q -- "--from.*changed since the checkpoint.*--set" "$work/d_from.err" &&
+  ! grep -q -- "--force" "$work/d_from.err" || bad "bench --from a changed case: $(cat "$work/d_from.err")"
 "$bin" run --resume "$work/d" --force > "$work/d.log" 2>&1 &
 pid=$!
 for _ in $(seq 1 100); do grep -q "resumed at" "$work/d.log" && break; sleep 0.1; done
