@@ -67,16 +67,7 @@ struct LaneSet {
   SILODEM_HOT int add(const Vec3& x_ij, const Vec3& v_i, const Vec3& w_i, double r_i, double m_i,
                       double inv_i_i, const Vec3& v_j, const Vec3& w_j, double r_j, double m_j,
                       double inv_i_j, const ContactState& s) {
-    const int l = stage(x_ij, v_i, w_i, r_i, m_i, inv_i_i, v_j, w_j, r_j, m_j, inv_i_j, s);
-    ++count;
-    return l;
-  }
-  // Copies one pair into the next free lane without taking it (count stays): the caller adds 1
-  // to count if the pair is in range. Lets the scan run without a branch on that test.
-  SILODEM_HOT int stage(const Vec3& x_ij, const Vec3& v_i, const Vec3& w_i, double r_i, double m_i,
-                        double inv_i_i, const Vec3& v_j, const Vec3& w_j, double r_j, double m_j,
-                        double inv_i_j, const ContactState& s) {
-    const int l = count;
+    const int l = count++;
     put(d, l, x_ij), put(vi, l, v_i), put(wi, l, w_i);
     put(vj, l, v_j), put(wj, l, w_j);
     ri[l] = r_i, mi[l] = m_i, inv_ii[l] = inv_i_i;
@@ -139,6 +130,7 @@ struct alignas(64) PairWindow {
   };
   std::vector<LaneSet> sets;      // one per law (material pair a * n + b)
   std::vector<LawParams> params;  // the numbers of each set's law
+  std::vector<int> hits, misses;  // one particle's list entries in range and out of range
   Entry entries[kLanes];
   int count = 0;
   char pad[64];  // the next thread's window starts on another cache line

@@ -221,9 +221,19 @@ void Simulation::pair_forces(int tid, double guard) {
     // in registers across the stores into the lanes.
     const Vec3 xi = p_.x[i], vi = p_.v[i], wi = p_.omega[i];
     const double ri = p_.radius[i], m_i = p_.mass[i], inv_ii = p_.inv_inertia[i];
-    for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
-      const int j = list_.partner[e];
-      const std::size_t uj = std::size_t(j);
+    // First which partners are in range, without a branch on it (half the listed pairs in a
+    // flowing bed: a coin toss for the branch predictor): the entries are sorted into two
+    // lists. Then the history of the pairs out of range is cleared, and only the pairs in
+    // range are copied into the lanes (their history is cleared as it is copied, and written
+    // back at the flush), so the data of j are loaded only for pairs that touch.
+    const int e0 = list_.offset[i], e1 = list_.offset[i + 1];
+    if (w.hits.size() < std::size_t(e1 - e0)) {
+      w.hits.resize(std::size_t(e1 - e0));
+      w.misses.resize(std::size_t(e1 - e0));
+    }
+    int n_hit = 0, n_miss = 0;
+    for (int e = e0; e < e1; ++e) {
+      const std::size_t uj = std::size_t(list_.partner[e]);
       if (std::size_t(e) + PF < n_pairs) {
         const std::size_t jp = std::size_t(list_.partner[std::size_t(e) + PF]);
         __builtin_prefetch(&p_.x[jp]);
@@ -234,25 +244,29 @@ void Simulation::pair_forces(int tid, double guard) {
         __builtin_prefetch(&p_.inv_inertia[jp]);
         __builtin_prefetch(&p_.material[jp]);
       }
-      // Without a branch on "in range" (half the listed pairs in a flowing bed, a coin toss for
-      // the branch predictor): every pair is staged into the next lane of its set and the entry
-      // list, and both counts grow only if it is in range. The history is cleared here and
-      // written back at the flush for the pairs in range.
       const double rj = p_.radius[uj];
-      const Vec3 d = xi - p_.x[uj];
-      const int mj = p_.material[uj];
-      const int set = mi * nm + mj;
+      const int set = mi * nm + p_.material[uj];
       const double reach = (ri + rj) * (1.0 + w.params[std::size_t(set)].cp.reach_over_d);
-      const int in = norm2(d) >= reach * reach ? 0 : 1;  // a NaN distance counts as in range
+      const int in = norm2(xi - p_.x[uj]) >= reach * reach ? 0 : 1;  // NaN counts as in range
+      w.hits[std::size_t(n_hit)] = e;
+      w.misses[std::size_t(n_miss)] = e;
+      n_hit += in;
+      n_miss += 1 - in;
+    }
+    for (int k = 0; k < n_miss; ++k) list_.set_state(std::size_t(w.misses[std::size_t(k)]), {});
+    for (int k = 0; k < n_hit; ++k) {
+      const int e = w.hits[std::size_t(k)];
+      const int j = list_.partner[e];
+      const std::size_t uj = std::size_t(j);
+      const double rj = p_.radius[uj];
+      const int set = mi * nm + p_.material[uj];
       LaneSet& ls = w.sets[std::size_t(set)];
-      const int lane = ls.stage(d, vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj, p_.mass[uj],
-                                p_.inv_inertia[uj], list_.state(std::size_t(e)));
-      ls.count += in;
+      const int lane = ls.add(xi - p_.x[uj], vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj,
+                              p_.mass[uj], p_.inv_inertia[uj], list_.state(std::size_t(e)));
       list_.set_state(std::size_t(e), ContactState{});
-      w.entries[w.count] = {int(i), j, e, set, lane};
-      w.count += in;
+      w.entries[w.count++] = {int(i), j, e, set, lane};
       if (w.full()) flush();
-      hi = in ? std::max(hi, uj + 1) : hi;  // j > i in the half list
+      hi = std::max(hi, uj + 1);  // j > i in the half list
     }
   }
   flush();
