@@ -224,8 +224,8 @@ void Simulation::pair_forces(int tid, double guard) {
     // First which partners are in range, without a branch on it (half the listed pairs in a
     // flowing bed: a coin toss for the branch predictor): the entries are sorted into two
     // lists. Then the history of the pairs out of range is cleared, and only the pairs in
-    // range are copied into the lanes (their history is cleared as it is copied, and written
-    // back at the flush), so the data of j are loaded only for pairs that touch.
+    // range are copied into the lanes (the flush writes their new history back), so the data
+    // of j are loaded only for pairs that touch.
     const int e0 = list_.offset[i], e1 = list_.offset[i + 1];
     if (w.hits.size() < std::size_t(e1 - e0)) {
       w.hits.resize(std::size_t(e1 - e0));
@@ -263,7 +263,6 @@ void Simulation::pair_forces(int tid, double guard) {
       LaneSet& ls = w.sets[std::size_t(set)];
       const int lane = ls.add(xi - p_.x[uj], vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj,
                               p_.mass[uj], p_.inv_inertia[uj], list_.state(std::size_t(e)));
-      list_.set_state(std::size_t(e), ContactState{});
       w.entries[w.count++] = {int(i), j, e, set, lane};
       if (w.full()) flush();
       hi = std::max(hi, uj + 1);  // j > i in the half list

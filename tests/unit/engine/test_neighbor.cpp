@@ -118,6 +118,44 @@ TEST(ContactHistory, SurvivesRemovalThatReordersParticles) {
   EXPECT_NEAR(removed.xb.y / alone.xb.y, 1.0, 1e-9);
 }
 
+TEST(ContactHistory, EndsWhenTheContactEnds) {
+  // b is pressed onto the fixed a and sheared until the tangential spring holds a load; then it
+  // is put 0.1 mm clear of a, inside the skin, so the pair stays listed and no rebuild runs. The
+  // pair loop must forget the spring at the next step (a later touch starts from zero).
+  test::Laws l;
+  l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
+  l.tangential = "linear_history";
+  l.tangential_p = {{"friction", 0.5}};
+  SimulationSettings s;
+  s.dt = 1e-6;
+  s.gravity = {};
+  s.threads = 1;
+  s.skin = 1e-3;
+  Simulation sim(test::model_of(l), s);
+  auto& p = sim.particles();
+  const auto a = p.add({0, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
+  const auto b = p.add({2e-3 - 1e-5, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
+  p.inv_mass[p.index_of(a)] = 0.0;
+  p.inv_inertia[p.index_of(a)] = 0.0;
+  p.inv_inertia[p.index_of(b)] = 0.0;
+  p.f_ext[p.index_of(b)] = {-0.1, 0.02, 0};
+  sim.run_steps(500);
+  bool flipped = false;
+  const std::optional<ContactState> loaded = sim.contact_state(a, b, &flipped);
+  ASSERT_TRUE(loaded);
+  ASSERT_GT(norm(loaded->tangential), 0.0);
+  const long builds = sim.neighbors().builds;
+  const std::size_t ib = std::size_t(p.index_of(b));
+  p.x[ib] = {2e-3 + 1e-4, p.x[ib].y, 0};
+  p.v[ib] = {};
+  p.f_ext[ib] = {};
+  sim.run_steps(3);
+  EXPECT_EQ(sim.neighbors().builds, builds);  // the pair loop's doing, not a rebuild's
+  const std::optional<ContactState> ended = sim.contact_state(a, b, &flipped);
+  ASSERT_TRUE(ended);  // still listed
+  EXPECT_EQ(norm(ended->tangential), 0.0);
+}
+
 TEST(ContactHistory, SurvivesMortonReorder) {
   // The far sphere comes first in memory; the Morton sort puts a and b (near the origin) first,
   // before the first build and again at the forced rebuild, while the spring is loaded.
