@@ -3,6 +3,7 @@
 // contact history across forced rebuilds and particle removal.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -52,13 +53,17 @@ TEST(VerletList, RebuildOnlyAfterHalfSkin) {
 }
 
 // Sphere b pressed onto a fixed sphere a and sheared by a force below the Coulomb limit, without
-// rolling, so that the tangential spring holds a static load; a third sphere far away. Returns the
-// tangential spring of the pair and the positions after `steps`, optionally forcing rebuilds or
-// removing the far sphere mid-way.
-struct Loaded {
-  Vec3 spring, xa, xb;
+// rolling, so that the tangential spring holds a static load (skin 1 mm = the radius); not yet
+// stepped. With `with_far`, a third sphere far away comes first in memory.
+struct ShearedPair {
+  std::unique_ptr<Simulation> sim;
+  std::uint64_t a = 0, b = 0, far = 0;
+  void load() {
+    auto& q = sim->particles();
+    q.f_ext[std::size_t(q.index_of(b))] = {-0.1, 0.02, 0};
+  }
 };
-Loaded loaded_pair(bool rebuild, bool remove_far, bool with_far, bool reorder = false) {
+ShearedPair sheared_pair(bool with_far, bool reorder) {
   test::Laws l;
   l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
   l.tangential = "linear_history";
@@ -67,26 +72,35 @@ Loaded loaded_pair(bool rebuild, bool remove_far, bool with_far, bool reorder = 
   s.dt = 1e-6;
   s.gravity = {};
   s.threads = 1;
+  s.skin = 1e-3;
   s.reorder_every = reorder ? 1 : 0;
-  Simulation sim(test::model_of(l), s);
+  ShearedPair sp;
+  sp.sim = std::make_unique<Simulation>(test::model_of(l), s);
+  auto& p = sp.sim->particles();
+  if (with_far) sp.far = p.add({1.0, 1.0, 1.0}, {}, {}, 1e-3, 1e-5, 0);
+  sp.a = p.add({0, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
+  sp.b = p.add({2e-3 - 1e-5, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
+  p.inv_mass[std::size_t(p.index_of(sp.a))] = 0.0;  // a is fixed
+  p.inv_inertia[std::size_t(p.index_of(sp.a))] = 0.0;
+  p.inv_inertia[std::size_t(p.index_of(sp.b))] = 0.0;  // b cannot roll
+  sp.load();
+  return sp;
+}
+// The tangential spring of the pair and the positions after 1000 steps, optionally forcing a
+// rebuild or removing the far sphere after 500.
+struct Loaded {
+  Vec3 spring, xa, xb;
+};
+Loaded loaded_pair(bool rebuild, bool remove_far, bool with_far, bool reorder = false) {
+  ShearedPair sp = sheared_pair(with_far, reorder);
+  Simulation& sim = *sp.sim;
   auto& p = sim.particles();
-  std::uint64_t far = 0;
-  if (with_far) far = p.add({1.0, 1.0, 1.0}, {}, {}, 1e-3, 1e-5, 0);
-  const auto a = p.add({0, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
-  const auto b = p.add({2e-3 - 1e-5, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
-  p.inv_mass[p.index_of(a)] = 0.0;  // a is fixed
-  p.inv_inertia[p.index_of(a)] = 0.0;
-  p.inv_inertia[p.index_of(b)] = 0.0;  // b cannot roll
-  auto set_loads = [&]() {
-    auto& q = sim.particles();
-    q.f_ext[q.index_of(b)] = {-0.1, 0.02, 0};
-  };
-  set_loads();
+  const auto a = sp.a, b = sp.b;
   sim.run_steps(500);
   if (rebuild) sim.request_rebuild();
   if (remove_far) {
-    sim.remove_particles({std::size_t(p.index_of(far))});
-    set_loads();
+    sim.remove_particles({std::size_t(p.index_of(sp.far))});
+    sp.load();
   }
   sim.run_steps(500);
   bool flipped = false;
@@ -122,36 +136,22 @@ TEST(ContactHistory, EndsWhenTheContactEnds) {
   // b is pressed onto the fixed a and sheared until the tangential spring holds a load; then it
   // is put 0.1 mm clear of a, inside the skin, so the pair stays listed and no rebuild runs. The
   // pair loop must forget the spring at the next step (a later touch starts from zero).
-  test::Laws l;
-  l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
-  l.tangential = "linear_history";
-  l.tangential_p = {{"friction", 0.5}};
-  SimulationSettings s;
-  s.dt = 1e-6;
-  s.gravity = {};
-  s.threads = 1;
-  s.skin = 1e-3;
-  Simulation sim(test::model_of(l), s);
+  ShearedPair sp = sheared_pair(false, false);
+  Simulation& sim = *sp.sim;
   auto& p = sim.particles();
-  const auto a = p.add({0, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
-  const auto b = p.add({2e-3 - 1e-5, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
-  p.inv_mass[p.index_of(a)] = 0.0;
-  p.inv_inertia[p.index_of(a)] = 0.0;
-  p.inv_inertia[p.index_of(b)] = 0.0;
-  p.f_ext[p.index_of(b)] = {-0.1, 0.02, 0};
   sim.run_steps(500);
   bool flipped = false;
-  const std::optional<ContactState> loaded = sim.contact_state(a, b, &flipped);
+  const std::optional<ContactState> loaded = sim.contact_state(sp.a, sp.b, &flipped);
   ASSERT_TRUE(loaded);
   ASSERT_GT(norm(loaded->tangential), 0.0);
   const long builds = sim.neighbors().builds;
-  const std::size_t ib = std::size_t(p.index_of(b));
+  const std::size_t ib = std::size_t(p.index_of(sp.b));
   p.x[ib] = {2e-3 + 1e-4, p.x[ib].y, 0};
   p.v[ib] = {};
   p.f_ext[ib] = {};
   sim.run_steps(3);
   EXPECT_EQ(sim.neighbors().builds, builds);  // the pair loop's doing, not a rebuild's
-  const std::optional<ContactState> ended = sim.contact_state(a, b, &flipped);
+  const std::optional<ContactState> ended = sim.contact_state(sp.a, sp.b, &flipped);
   ASSERT_TRUE(ended);  // still listed
   EXPECT_EQ(norm(ended->tangential), 0.0);
 }
