@@ -131,6 +131,7 @@ struct alignas(64) PairWindow {
   std::vector<LaneSet> sets;      // one per law (material pair a * n + b)
   std::vector<LawParams> params;  // the numbers of each set's law
   std::vector<int> hits, misses;  // one particle's list entries in range and out of range
+  double reach = 1.0;             // 1 + the longest reach_over_d of the sets' laws
   Entry entries[kLanes];
   int count = 0;
   char pad[64];  // the next thread's window starts on another cache line

@@ -225,7 +225,11 @@ void Simulation::pair_forces(int tid, double guard) {
     // flowing bed: a coin toss for the branch predictor): the entries are sorted into two
     // lists. Then the history of the pairs out of range is cleared, and only the pairs in
     // range are copied into the lanes (the flush writes their new history back), so the data
-    // of j are loaded only for pairs that touch.
+    // of j are loaded only for pairs that touch. "In range" is tested with the longest reach
+    // of the coal pairs, so it needs neither j's coal nor its law. ContactModel::build gives
+    // every pair the same reach (one cohesion section, one range), so that is each pair's own;
+    // were they to differ, a pair beyond its own reach would still come out right: evaluate()
+    // gives it zero force and a cleared history, as the miss list does.
     const int e0 = list_.offset[i], e1 = list_.offset[i + 1];
     if (w.hits.size() < std::size_t(e1 - e0)) {
       w.hits.resize(std::size_t(e1 - e0));
@@ -244,9 +248,7 @@ void Simulation::pair_forces(int tid, double guard) {
         __builtin_prefetch(&p_.inv_inertia[jp]);
         __builtin_prefetch(&p_.material[jp]);
       }
-      const double rj = p_.radius[uj];
-      const int set = mi * nm + p_.material[uj];
-      const double reach = (ri + rj) * (1.0 + w.params[std::size_t(set)].cp.reach_over_d);
+      const double reach = (ri + p_.radius[uj]) * w.reach;
       const int in = norm2(xi - p_.x[uj]) >= reach * reach ? 0 : 1;  // NaN counts as in range
       w.hits[std::size_t(n_hit)] = e;
       w.misses[std::size_t(n_miss)] = e;
@@ -322,6 +324,7 @@ void Simulation::compute_forces(bool finish_step) {
       w.sets.resize(std::size_t(nm * nm));
       for (int a = 0; a < nm; ++a)
         for (int b = 0; b < nm; ++b) w.params.push_back(law_params(model_.pair(a, b)));
+      for (const auto& lp : w.params) w.reach = std::max(w.reach, 1.0 + lp.cp.reach_over_d);
     }
   }
   written_.assign(std::size_t(nt), {0, 0});
