@@ -4,6 +4,7 @@
 #   libtomlplusplus-dev     case files (TOML)
 #   libcli11-dev            command line
 #   libfmt-dev              formatting
+#   nlohmann-json3-dev      reading summary.json back (study, calibrate): toml++ writes JSON only
 #   libgtest-dev            tests (GoogleTest)
 #   libbenchmark-dev        benchmarks (Google Benchmark)
 #   clang-format            format check in CI
@@ -12,7 +13,7 @@
 #   python3-vtk9            tests read the ParaView files back with the real VTK library
 #   clang-14 libclang-rt-14-dev libomp-14-dev   the libFuzzer target over the case loader (CI)
 set -euo pipefail
-pkgs=(g++ cmake make libtomlplusplus-dev libcli11-dev libfmt-dev libgtest-dev libbenchmark-dev
+pkgs=(g++ cmake make libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
       clang-format python3 python3-matplotlib python3-vtk9 clang-14 libclang-rt-14-dev
       libomp-14-dev)
 missing=()

@@ -27,7 +27,32 @@ struct BenchOptions {
   std::string from_dir;    // time the discharge of this run directory from its checkpoint
 };
 
+struct StudyOptions {
+  std::string study_path;
+  std::string out_dir;
+  int threads = 0;  // in all (0: every core)
+  int jobs = 1;     // runs side by side, sharing the threads
+};
+
+struct CalibrateOptions {
+  std::string case_path;
+  std::vector<std::string> params;  // keys moved together
+  std::string target;               // METRIC=VALUE
+  std::string window;               // "T0,T1" (window_rate_kg_s)
+  std::string bracket;              // "LO,HI"
+  int seeds = 1;                    // seeds 1..N per evaluation
+  double tolerance = 0.05;          // relative, on the metric
+  int max_evaluations = 12;         // points after the bracket's two ends
+  std::string out_dir;
+  int threads = 0;
+  int jobs = 1;
+  std::vector<std::string> overrides;  // --set on every run
+};
+
 int run_command(const RunOptions& o);
+int default_threads();  // the cores this process may use
+int study_command(const StudyOptions& o);
+int calibrate_command(const CalibrateOptions& o);
 int bench_command(const BenchOptions& o);
 int check_command(const std::string& case_path, bool json,
                   const std::vector<std::string>& overrides);
@@ -35,6 +60,10 @@ int check_command(const std::string& case_path, bool json,
 // Figures and report.html of a run directory (tools/silodem_report.py). With
 // quiet_if_unavailable, a missing Python/matplotlib is a warning, not an error.
 int report_command(const std::string& dir, bool quiet_if_unavailable = false);
+// Runs tools/<script> with the figure-making Python and `args`; returns its exit code (2 on a
+// usage error). With quiet_if_unavailable, a missing Python/matplotlib is a warning (exit 0).
+int run_tool(const std::string& script, const std::vector<std::string>& args,
+             bool quiet_if_unavailable);
 // Overlay figures of several runs into `out` (tools/silodem_compare.py); labels "A,B,...".
 int compare_command(const std::vector<std::string>& dirs, const std::string& out,
                     const std::string& labels);

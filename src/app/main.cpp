@@ -96,6 +96,53 @@ int main(int argc, char** argv) {
       ->excludes(bench_refill)
       ->excludes(bench_export);
 
+  app::StudyOptions study;
+  auto* study_cmd = cli.add_subcommand(
+      "study",
+      "run a case over a grid of case-key values and seeds; collect study.csv, figures "
+      "and report.html (the same command continues a killed study)");
+  study_cmd->add_option("study", study.study_path, "study file (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  study_cmd->add_option("--out", study.out_dir, "study directory (created; reused to continue)")
+      ->required();
+  study_cmd->add_option("--threads", study.threads, "OpenMP threads in all (default: all cores)")
+      ->check(CLI::Range(0, 1024));
+  study_cmd->add_option("--jobs", study.jobs, "runs side by side, sharing the threads (default 1)")
+      ->check(CLI::Range(1, 256));
+
+  app::CalibrateOptions cal;
+  std::string cal_params;
+  auto* cal_cmd = cli.add_subcommand(
+      "calibrate",
+      "find the parameter value at which a run metric meets a target (bracketing "
+      "search over seed-averaged runs; resumable)");
+  cal_cmd->add_option("case", cal.case_path, "silo case file (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cal_cmd->add_option("--param", cal_params, "case key(s) moved together, comma separated")
+      ->required();
+  cal_cmd->add_option("--target", cal.target, "METRIC=VALUE, e.g. mean_rate_kg_s=0.335")
+      ->required();
+  cal_cmd->add_option("--window", cal.window, "T0,T1: s after the valve opens (window_rate_kg_s)");
+  cal_cmd->add_option("--bracket", cal.bracket, "LO,HI (default: the case's value / 4 and x 4)");
+  cal_cmd->add_option("--seeds", cal.seeds, "seeds per evaluation, 1..N (default 1)")
+      ->check(CLI::Range(1, 100));
+  cal_cmd->add_option("--tolerance", cal.tolerance,
+                      "relative tolerance on the metric (default 0.05)");
+  cal_cmd
+      ->add_option("--max-evaluations", cal.max_evaluations,
+                   "evaluations after the bracket's ends (default 12)")
+      ->check(CLI::Range(1, 1000));
+  cal_cmd->add_option("--out", cal.out_dir, "directory of the search (created; reused to continue)")
+      ->required();
+  cal_cmd->add_option("--threads", cal.threads, "OpenMP threads in all (default: all cores)")
+      ->check(CLI::Range(0, 1024));
+  cal_cmd->add_option("--jobs", cal.jobs, "runs side by side (default 1)")
+      ->check(CLI::Range(1, 256));
+  cal_cmd->add_option("--set", cal.overrides,
+                      "override a case-file value on every run (repeatable)");
+
   auto* docs_cmd =
       cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
 
@@ -114,6 +161,19 @@ int main(int argc, char** argv) {
                          "a resumed run uses the case in its directory; --set is refused");
       run.report = !no_report;
       return app::run_command(run);
+    }
+    if (*study_cmd) {
+      if (study.threads == 0) study.threads = app::default_threads();
+      return app::study_command(study);
+    }
+    if (*cal_cmd) {
+      for (std::size_t a = 0, b = 0; a <= cal_params.size(); a = b + 1) {
+        b = cal_params.find(',', a);
+        if (b == std::string::npos) b = cal_params.size();
+        if (b > a) cal.params.push_back(cal_params.substr(a, b - a));
+      }
+      if (cal.threads == 0) cal.threads = app::default_threads();
+      return app::calibrate_command(cal);
     }
     if (*report_cmd) return app::report_command(report_dir);
     if (*bench_cmd) return app::bench_command(bench);

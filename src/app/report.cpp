@@ -73,6 +73,26 @@ int report_command(const std::string& dir, bool quiet_if_unavailable) {
   return kExitOk;
 }
 
+int run_tool(const std::string& script, const std::vector<std::string>& args,
+             bool quiet_if_unavailable) {
+  const Tools t = find_tools();
+  if (!t.problem.empty()) {
+    if (quiet_if_unavailable) {
+      fmt::print(stderr, "warning: figures and report.html not made: {}\n", t.problem);
+      return kExitOk;
+    }
+    throw std::runtime_error(t.problem);
+  }
+  std::vector<std::string> argv = {t.python, (fs::path(t.dir) / script).string()};
+  argv.insert(argv.end(), args.begin(), args.end());
+  const int rc = spawn(argv);
+  if (rc != 0) {
+    fmt::print(stderr, "error: {} failed (exit {})\n", script, rc);
+    return rc == 2 ? kExitInput : 1;
+  }
+  return kExitOk;
+}
+
 int compare_command(const std::vector<std::string>& dirs, const std::string& out,
                     const std::string& labels) {
   const Tools t = find_tools();

@@ -617,6 +617,23 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
   return c;
 }
 
+Case parse(const std::string& text, const std::string& name,
+           const std::vector<std::string>& overrides = {}, const std::string& base_dir = {}) {
+  try {
+    toml::table root = toml::parse(text, name);
+    for (const auto& o : overrides) apply_override(root, o);
+    return build(root, name, base_dir);
+  } catch (const toml::parse_error& e) {
+    const auto& s = e.source();
+    throw InputError({name, int(s.begin.line), int(s.begin.column)}, "",
+                     std::string("TOML syntax error: ") + std::string(e.description()));
+  } catch (const std::invalid_argument& e) {
+    throw InputError({name, 0, 0}, "", e.what());
+  }
+}
+
+}  // namespace
+
 // Applies "a.b.c=value" (value in TOML syntax; a bare word is taken as a string).
 void apply_override(toml::table& root, const std::string& item) {
   const auto eq = item.find('=');
@@ -665,23 +682,6 @@ void apply_override(toml::table& root, const std::string& item) {
     start = dot + 1;
   }
 }
-
-Case parse(const std::string& text, const std::string& name,
-           const std::vector<std::string>& overrides = {}, const std::string& base_dir = {}) {
-  try {
-    toml::table root = toml::parse(text, name);
-    for (const auto& o : overrides) apply_override(root, o);
-    return build(root, name, base_dir);
-  } catch (const toml::parse_error& e) {
-    const auto& s = e.source();
-    throw InputError({name, int(s.begin.line), int(s.begin.column)}, "",
-                     std::string("TOML syntax error: ") + std::string(e.description()));
-  } catch (const std::invalid_argument& e) {
-    throw InputError({name, 0, 0}, "", e.what());
-  }
-}
-
-}  // namespace
 
 Case load_case_file(const std::string& path, const std::vector<std::string>& overrides,
                     const std::string& base_dir) {

@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: MIT
+#include "app/run_jobs.hpp"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/file.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <map>
+#include <thread>
+
+#include "app/commands.hpp"
+#include "core/error.hpp"
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace silodem::app {
+namespace {
+
+std::atomic<int> g_stop{0};
+extern "C" void on_stop_signal(int sig) {
+  g_stop.store(sig);
+}
+
+using Clock = std::chrono::steady_clock;
+
+struct Child {
+  std::size_t job;
+  Clock::time_point start;
+};
+
+// The environment of a child: ours, with OMP_WAIT_POLICY=passive unless it is set (children
+// side by side must not spin on each other's cores).
+std::vector<std::string> child_environment() {
+  std::vector<std::string> env;
+  bool has_wait_policy = false;
+  for (char** e = environ; *e; ++e) {
+    env.emplace_back(*e);
+    if (std::strncmp(*e, "OMP_WAIT_POLICY=", 16) == 0) has_wait_policy = true;
+  }
+  if (!has_wait_policy) env.emplace_back("OMP_WAIT_POLICY=passive");
+  return env;
+}
+
+std::vector<char*> pointers(std::vector<std::string>& v) {
+  std::vector<char*> p;
+  for (auto& s : v) p.push_back(s.data());
+  p.push_back(nullptr);
+  return p;
+}
+
+// Starts `args` (args[0] the executable) with stdout and stderr appended to `log`; the child is
+// in its own process group (a Ctrl-C reaches only the runner, which forwards one SIGTERM) and
+// dies with its parent.
+pid_t start_child(std::vector<std::string> args, std::vector<std::string> env,
+                  const fs::path& log) {
+  const pid_t parent = getpid();
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) throw std::runtime_error(fmt::format("cannot open '{}'", log.string()));
+  const std::vector<char*> argv = pointers(args), envp = pointers(env);
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fd);
+    throw std::runtime_error("fork failed");
+  }
+  if (pid == 0) {  // only async-signal-safe calls from here to exec
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(127);
+    const int null = open("/dev/null", O_RDONLY);
+    if (null >= 0) dup2(null, STDIN_FILENO);
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    signal(SIGINT, SIG_DFL);
+    signal(SIGTERM, SIG_DFL);
+    execve(argv[0], argv.data(), envp.data());
+    _exit(127);
+  }
+  close(fd);
+  return pid;
+}
+
+}  // namespace
+
+int default_threads() {
+  return std::max(1, int(std::thread::hardware_concurrency()));
+}
+
+JobRunner::JobRunner(int threads, int jobs, fs::path log_dir, bool reports)
+    : jobs_(std::max(1, jobs)),
+      per_job_(std::max(1, threads / std::max(1, jobs))),
+      log_dir_(std::move(log_dir)),
+      reports_(reports) {
+  g_stop.store(0);
+  std::signal(SIGINT, on_stop_signal);
+  std::signal(SIGTERM, on_stop_signal);
+}
+
+JobRunner::~JobRunner() {
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+}
+
+bool JobRunner::interrupted() const {
+  return g_stop.load() != 0;
+}
+
+void JobRunner::lock(const fs::path& dir) {
+  fs::create_directories(dir);
+  const fs::path file = dir / ".lock";
+  // Held (never closed) until the process ends; not inherited by the children (O_CLOEXEC).
+  const int fd = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError({}, "--out", fmt::format("cannot open '{}'", file.string()));
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    close(fd);
+    throw InputError({}, "--out",
+                     fmt::format("'{}' is in use by another silodem study or calibration (it "
+                                 "holds {}); wait for it or stop it first",
+                                 dir.string(), file.string()));
+  }
+}
+
+std::vector<JobOutcome> JobRunner::run(
+    const std::vector<RunJob>& jobs, const std::function<void(std::size_t)>& on_done,
+    const std::function<void(std::size_t, std::size_t, double)>& status) {
+  fs::create_directories(log_dir_);
+  const std::string exe = fs::read_symlink("/proc/self/exe").string();
+  const std::vector<std::string> env = child_environment();
+  std::vector<JobOutcome> out(jobs.size());
+  std::deque<std::size_t> pending;
+  std::size_t done = 0;
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    out[i].state = run_state(jobs[i].dir);
+    if (out[i].state == RunState::Finished || out[i].state == RunState::Failed) {
+      ++done;
+      on_done(i);
+    } else {
+      pending.push_back(i);
+    }
+  }
+  std::map<pid_t, Child> running;
+  double wall_sum = 0.0;
+  int timed = 0;
+  bool forwarded = false;
+  std::string input_error;
+  auto last_status = Clock::now() - std::chrono::seconds(10);
+  while (!pending.empty() || !running.empty()) {
+    if ((g_stop.load() || !input_error.empty()) && !forwarded) {
+      for (const auto& [pid, c] : running) kill(pid, SIGTERM);  // each writes its checkpoint
+      forwarded = true;
+      pending.clear();
+    }
+    while (!forwarded && running.size() < std::size_t(jobs_) && !pending.empty()) {
+      const std::size_t i = pending.front();
+      pending.pop_front();
+      const RunJob& j = jobs[i];
+      std::vector<std::string> args = {exe, "run"};
+      if (out[i].state == RunState::Resumable) {
+        args.insert(args.end(), {"--resume", j.dir.string()});  // the checkpoint's thread count
+      } else {
+        if (out[i].state == RunState::Restart) fs::remove_all(j.dir);
+        args.insert(args.end(),
+                    {j.case_path, "--out", j.dir.string(), "--threads", std::to_string(per_job_)});
+        for (const auto& s : j.overrides) args.insert(args.end(), {"--set", s});
+      }
+      if (!reports_) args.emplace_back("--no-report");
+      const pid_t pid = start_child(args, env, log_dir_ / (j.name + ".log"));
+      running.emplace(pid, Child{i, Clock::now()});
+    }
+    int wstatus = 0;
+    const pid_t pid = running.empty() ? 0 : waitpid(-1, &wstatus, WNOHANG);
+    if (pid > 0 && running.count(pid)) {
+      const Child c = running.at(pid);
+      running.erase(pid);
+      const std::size_t i = c.job;
+      out[i].exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus)
+                                            : 128 + (WIFSIGNALED(wstatus) ? WTERMSIG(wstatus) : 0);
+      out[i].state = run_state(jobs[i].dir);
+      if (out[i].exit_code == kExitInput && input_error.empty())
+        input_error = fmt::format("run {} refused its input (see {})", jobs[i].name,
+                                  (log_dir_ / (jobs[i].name + ".log")).string());
+      if (out[i].state == RunState::Finished || out[i].state == RunState::Failed) {
+        ++done;
+        wall_sum += std::chrono::duration<double>(Clock::now() - c.start).count();
+        ++timed;
+        on_done(i);
+      }
+    } else if (pid <= 0) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    if (Clock::now() - last_status > std::chrono::seconds(1)) {
+      last_status = Clock::now();
+      const double left = double(pending.size()) + 0.5 * double(running.size());
+      status(done, running.size(), timed > 0 ? wall_sum / timed * left / jobs_ : -1.0);
+    }
+  }
+  if (!input_error.empty()) throw InputError({}, "study", input_error);
+  return out;
+}
+
+}  // namespace silodem::app

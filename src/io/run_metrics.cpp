@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+#include "io/run_metrics.hpp"
+
+#include <fmt/format.h>
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace silodem {
+namespace {
+
+nlohmann::json read_json(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("cannot open '{}'", file.string()));
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::runtime_error(fmt::format("'{}' is not valid JSON: {}", file.string(), e.what()));
+  }
+}
+
+double number_or_nan(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_number() ? it->get<double>() : RunMetrics::nan;
+}
+
+std::string string_or_empty(const nlohmann::json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+}  // namespace
+
+const char* to_string(RunState s) {
+  switch (s) {
+    case RunState::Absent:
+      return "absent";
+    case RunState::Restart:
+      return "restart";
+    case RunState::Resumable:
+      return "resumable";
+    case RunState::Finished:
+      return "finished";
+    case RunState::Failed:
+      return "failed";
+  }
+  return "?";
+}
+
+RunState run_state(const fs::path& dir) {
+  if (!fs::exists(dir) || (fs::is_directory(dir) && fs::is_empty(dir))) return RunState::Absent;
+  const fs::path summary = dir / "summary.json";
+  if (fs::is_regular_file(summary)) {
+    nlohmann::json j;
+    try {
+      j = read_json(summary);
+    } catch (const std::runtime_error&) {
+      j = nlohmann::json::object();  // written atomically, so only a foreign file gets here
+    }
+    if (j.value("complete", false)) return RunState::Finished;
+    // A guard stopped it: the same case would stop again, so the error is the run's result.
+    if (!string_or_empty(j, "error").empty() &&
+        string_or_empty(j, "end").rfind("interrupted", 0) != 0)
+      return RunState::Failed;
+  }
+  return fs::is_regular_file(dir / "checkpoint.bin") ? RunState::Resumable : RunState::Restart;
+}
+
+std::vector<OutletRow> read_outlet_csv(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(fmt::format("cannot open '{}'", file.string()));
+  std::string line;
+  std::getline(in, line);
+  if (line.rfind("t_start_s,t_end_s,mass_kg", 0) != 0)
+    throw std::runtime_error(
+        fmt::format("'{}' does not start with t_start_s,t_end_s,mass_kg", file.string()));
+  std::vector<OutletRow> rows;
+  for (int n = 2; std::getline(in, line); ++n) {
+    if (line.empty()) continue;
+    std::istringstream s(line);
+    std::string a, b, c;
+    std::getline(s, a, ','), std::getline(s, b, ','), std::getline(s, c, ',');
+    try {
+      rows.push_back({std::stod(a), std::stod(b), c.empty() ? 0.0 : std::stod(c)});
+    } catch (const std::exception&) {
+      throw std::runtime_error(fmt::format("{}:{}: not a number in '{}'", file.string(), n, line));
+    }
+  }
+  return rows;
+}
+
+double window_rate(const std::vector<OutletRow>& bins, double t0, double t1, bool emptied,
+                   double discharge_time) {
+  if (emptied && std::isfinite(discharge_time)) t1 = std::min(t1, discharge_time);
+  if (!(t1 > t0)) return RunMetrics::nan;
+  double mass = 0.0;
+  for (const auto& b : bins) {
+    const double w = b.t_end - b.t_start;
+    const double overlap = std::min(b.t_end, t1) - std::max(b.t_start, t0);
+    if (w > 0.0 && overlap > 0.0) mass += b.mass * overlap / w;
+  }
+  return mass / (t1 - t0);
+}
+
+RunMetrics read_run_metrics(const fs::path& dir, double t0, double t1) {
+  const nlohmann::json j = read_json(dir / "summary.json");
+  RunMetrics m;
+  m.complete = j.value("complete", false);
+  m.flow_stopped = j.value("flow_stopped", false);
+  m.end = string_or_empty(j, "end");
+  m.error = string_or_empty(j, "error");
+  m.filled_mass_kg = number_or_nan(j, "filled_mass_kg");
+  m.discharged_mass_kg = number_or_nan(j, "discharged_mass_kg");
+  m.discharge_time_s = number_or_nan(j, "discharge_time_s");
+  m.mean_rate_kg_s = number_or_nan(j, "mean_rate_kg_s");
+  m.outlet_mean_calorific_kcal_kg = number_or_nan(j, "outlet_mean_calorific_kcal_kg");
+  m.wall_time_s = number_or_nan(j, "wall_time_s");
+  m.k = number_or_nan(j, "k");
+  if (const auto it = j.find("particles_lost"); it != j.end() && it->is_number_integer())
+    m.particles_lost = it->get<long>();
+  if (t1 > t0 && fs::is_regular_file(dir / "outlet.csv"))
+    m.window_rate_kg_s =
+        window_rate(read_outlet_csv(dir / "outlet.csv"), t0, t1, m.emptied(), m.discharge_time_s);
+  return m;
+}
+
+const std::vector<std::string>& metric_names() {
+  static const std::vector<std::string> names = {
+      "discharged_mass_kg", "discharge_time_s",    "mean_rate_kg_s",
+      "window_rate_kg_s",   "discharged_fraction", "outlet_mean_calorific_kcal_kg",
+      "wall_time_s"};
+  return names;
+}
+
+double metric_value(const RunMetrics& m, const std::string& name) {
+  if (name == "discharged_mass_kg") return m.discharged_mass_kg;
+  if (name == "discharge_time_s") return m.discharge_time_s;
+  if (name == "mean_rate_kg_s") return m.mean_rate_kg_s;
+  if (name == "window_rate_kg_s") return m.window_rate_kg_s;
+  if (name == "discharged_fraction") return m.discharged_mass_kg / m.filled_mass_kg;
+  if (name == "outlet_mean_calorific_kcal_kg") return m.outlet_mean_calorific_kcal_kg;
+  if (name == "wall_time_s") return m.wall_time_s;
+  std::string all;
+  for (const auto& n : metric_names()) all += (all.empty() ? "" : ", ") + n;
+  throw std::invalid_argument(fmt::format("unknown metric '{}' (one of: {})", name, all));
+}
+
+double calibration_value(const RunMetrics& m, const std::string& name) {
+  const double v = metric_value(m, name);
+  if (name == "discharge_time_s" && !m.emptied()) return std::numeric_limits<double>::infinity();
+  if (name == "mean_rate_kg_s" && m.flow_stopped) return 0.0;
+  return v;
+}
+
+}  // namespace silodem

@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# End-to-end (issue 16): `silodem study` runs 3 values x 2 seeds of a shortened small-silo case to
+# the end; killed with SIGKILL in the middle and started again, it leaves the finished runs
+# alone, continues the unfinished one (from its checkpoint, or from the start if it was killed
+# in its fill) and the others, and ends with the same results as an uninterrupted run; it writes
+# study.csv with one row per run and the metric columns, the figures and report.html.
+set -u
+bin=$1
+src=$2
+work=$(mktemp -d)
+trap 'kill -9 $(jobs -p) 2>/dev/null; rm -rf "$work"' EXIT
+fail=0
+bad() { printf 'FAIL: %s\n' "$*"; fail=1; }
+
+cat > "$work/study.toml" <<TOML
+title = "e2e study: outlet size"
+base = "$src/tests/data/small_silo.toml"
+seeds = [1, 2]
+# A narrower outlet and finer steps make each discharge last a few seconds, long enough to be
+# killed in the middle; frequent checkpoints make the kill land after one.
+set = ["simulation.steps_per_collision=60", "simulation.checkpoint_interval=0.02",
+       "discharge.max_time=4"]
+window = [0.2, 0.6]
+[[vary]]
+key = "silo.outlet_diameter_mm"
+name = "outlet"
+values = [30.0, 34.0, 38.0]
+TOML
+
+# Bad input is refused before anything runs: an unknown case key in a value list.
+sed 's/key = "silo.outlet_diameter_mm"/key = "silo.outlet_diamter_mm"/' "$work/study.toml" > "$work/bad.toml"
+"$bin" study "$work/bad.toml" --out "$work/bad" > /dev/null 2> "$work/bad.err"
+rc=$?
+[ $rc -eq 2 ] || bad "a study with an unknown key exited $rc, expected 2"
+grep -q "outlet_diamter_mm" "$work/bad.err" || bad "the error does not name the key: $(cat "$work/bad.err")"
+[ -e "$work/bad/runs" ] && bad "a refused study started runs"
+
+# Start, and kill the study (SIGKILL) while its third run is in its discharge.
+"$bin" study "$work/study.toml" --out "$work/s" --threads 1 --jobs 1 > "$work/s1.log" 2>&1 &
+pid=$!
+third="$work/s/runs/outlet=34.0_seed=1"
+for _ in $(seq 1 1200); do
+  [ -f "$third/checkpoint.bin" ] && break
+  sleep 0.1
+done
+[ -f "$third/checkpoint.bin" ] || bad "the third run never reached its discharge: $(tail -3 "$work/s1.log")"
+sleep 0.5
+kill -9 $pid
+wait $pid 2>/dev/null
+sleep 0.5
+pgrep -f "run $src/tests/data/small_silo.toml --out $work/s/" > /dev/null &&
+  bad "a child run outlived the killed study"
+grep -q '"complete" : true' "$work/s/runs/outlet=30.0_seed=1/summary.json" ||
+  bad "the first run was not finished before the kill (make the runs longer)"
+grep -q '"complete" : false' "$third/summary.json" || bad "the third run finished before the kill"
+# What the finished runs look like now: the restart must not touch them.
+stat -c '%Y %i' "$work/s/runs/outlet=30.0_seed="{1,2}/summary.json > "$work/before.txt"
+
+"$bin" study "$work/study.toml" --out "$work/s" --threads 1 --jobs 2 > "$work/s2.log" 2>&1 ||
+  bad "the continued study exited $?: $(tail -3 "$work/s2.log")"
+stat -c '%Y %i' "$work/s/runs/outlet=30.0_seed="{1,2}/summary.json > "$work/after.txt"
+cmp -s "$work/before.txt" "$work/after.txt" || bad "the continued study redid a finished run"
+grep -q "resumed at t = " "$work/s/logs/outlet=34.0_seed=1.log" ||
+  bad "the interrupted run was not resumed from its checkpoint"
+grep -q "runs done" "$work/s2.log" || bad "no progress line"
+
+# The killed and resumed run equals the same run made at once.
+"$bin" run "$src/tests/data/small_silo.toml" --out "$work/ref" --threads 1 --no-report \
+  --set simulation.steps_per_collision=60 --set simulation.checkpoint_interval=0.02 \
+  --set discharge.max_time=4 --set silo.outlet_diameter_mm=34.0 --set simulation.seed=1 \
+  > /dev/null 2>&1 || bad "reference run exited $?"
+for f in outlet.csv fill.csv final_state.bin; do
+  cmp -s "$work/ref/$f" "$third/$f" || bad "the killed and resumed run's $f differs from an uninterrupted run"
+done
+
+python3 - "$work/s" <<'PY' || fail=1
+import csv, json, os, sys
+d = sys.argv[1]
+rows = list(csv.DictReader(open(os.path.join(d, "study.csv"))))
+assert len(rows) == 6, f"study.csv has {len(rows)} rows, expected 6"
+for col in ["run", "outlet", "seed", "state", "discharged_mass_kg", "discharge_time_s",
+            "mean_rate_kg_s", "window_rate_kg_s", "flow_stopped", "end",
+            "outlet_mean_calorific_kcal_kg", "wall_time_s"]:
+    assert col in rows[0], f"study.csv lacks {col}"
+assert sorted((r["outlet"], r["seed"]) for r in rows) == sorted(
+    (o, s) for o in ["30.0", "34.0", "38.0"] for s in ["1", "2"]), rows
+for r in rows:
+    assert r["state"] == "finished", r
+    s = json.load(open(os.path.join(d, "runs", r["run"], "summary.json")))
+    assert abs(float(r["discharged_mass_kg"]) - s["discharged_mass_kg"]) <= 1e-12 * s["discharged_mass_kg"], r
+    assert r["flow_stopped"] == ("true" if s["flow_stopped"] else "false"), r
+    # The window rate is the outlet.csv mass inside [0.2, 0.6] s over 0.4 s (bins of 0.1 s).
+    out = list(csv.DictReader(open(os.path.join(d, "runs", r["run"], "outlet.csv"))))
+    m = sum(float(b["mass_kg"] or 0) for b in out
+            if float(b["t_start_s"]) >= 0.2 - 1e-9 and float(b["t_end_s"]) <= 0.6 + 1e-9)
+    end = min(0.6, s["discharge_time_s"]) if s["end"] == "emptied" else 0.6
+    if end >= 0.6:
+        assert abs(float(r["window_rate_kg_s"]) - m / 0.4) <= 1e-9 + 1e-9 * m, (r, m)
+# Beverloo: a wider outlet discharges faster (W ~ (D - k d)^2.5: 30 -> 38 mm is +70%).
+rate = {o: sum(float(r["window_rate_kg_s"]) for r in rows if r["outlet"] == o) / 2
+        for o in ["30.0", "38.0"]}
+assert rate["38.0"] > 1.3 * rate["30.0"], rate
+for f in ["report.html", "figures/mean_rate_kg_s_vs_outlet.png",
+          "figures/window_rate_kg_s_vs_outlet.png", "figures/discharged_fraction_vs_outlet.png",
+          "figures/outlet_rate.png", "figures/outlet_cumulative.png",
+          "figures/outlet_calorific.png"]:
+    p = os.path.join(d, f)
+    assert os.path.isfile(p) and os.path.getsize(p) > 0, f"missing {f}"
+html = open(os.path.join(d, "report.html")).read()
+assert "figures/mean_rate_kg_s_vs_outlet.png" in html and "outlet=38.0_seed=2" in html
+PY
+
+# A third start finds every run finished and starts none.
+"$bin" study "$work/study.toml" --out "$work/s" --threads 1 > "$work/s3.log" 2>&1 || bad "third start exited $?"
+grep -q "6 runs finished" "$work/s3.log" || bad "third start: $(tail -2 "$work/s3.log")"
+# A changed fixed setting is refused: it would mix two cases in one study.
+sed -i 's/discharge.max_time=4/discharge.max_time=5/' "$work/study.toml"
+"$bin" study "$work/study.toml" --out "$work/s" --threads 1 > /dev/null 2> "$work/s4.err"
+[ $? -eq 2 ] && grep -q "use a new --out" "$work/s4.err" || bad "a changed study was not refused: $(cat "$work/s4.err")"
+exit $fail
