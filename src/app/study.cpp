@@ -70,7 +70,7 @@ std::vector<std::string> metric_cells(const RunMetrics* m, RunState state) {
   auto num = [](double x) { return std::isfinite(x) ? fmt::format("{}", x) : std::string(); };
   if (!m) {
     std::vector<std::string> cells(metric_columns().size());
-    cells[0] = to_string(state);
+    cells[0] = state == RunState::Failed ? "failed" : "pending";
     return cells;
   }
   return {to_string(state),
