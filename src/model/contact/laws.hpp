@@ -13,6 +13,7 @@
 #include "model/contact/normal_linear_spring_dashpot.hpp"
 #include "model/contact/rolling_epsd.hpp"
 #include "model/contact/rolling_mfix.hpp"
+#include "model/contact/rolling_mfix21.hpp"
 #include "model/contact/rolling_none.hpp"
 #include "model/contact/tangential_linear_history.hpp"
 #include "model/contact/tangential_none.hpp"
@@ -24,7 +25,7 @@ struct LawList {};
 
 using NormalLaws = LawList<NormalLinearSpringDashpot>;
 using TangentialLaws = LawList<TangentialNone, TangentialLinearHistory>;
-using RollingLaws = LawList<RollingNone, RollingMfix, RollingEpsd>;
+using RollingLaws = LawList<RollingNone, RollingMfix, RollingEpsd, RollingMfix21>;
 using CohesionLaws =
     LawList<CohesionNone, CohesionOverlapOnly, CohesionConstantRange, CohesionMfixLike>;
 

@@ -39,10 +39,11 @@ using TangentialKernel = Vec3 (*)(const TangentialParams&, const ContactGeometry
 // ---- rolling ------------------------------------------------------------------------------
 struct RollingParams {
   double friction = 0.0;             // mu_r
+  double length = 0.0;               // mfix-21: L = MFiX 21.3's MEW_R, a length (m)
   double stiffness_factor = 2.25;    // EPSD: k_r = factor k_n mu_r^2 R_eff^2 (Ai et al. 2011)
   double damping_fraction = 0.3;     // EPSD: eta_r, fraction of critical rolling damping
   bool limit_sees_cohesion = false;  // EPSD limit on |F_n - F_coh| instead of |F_n|
-  bool regularize = true;            // MFIX: smooth the sign(omega) switch near omega = 0
+  bool regularize = true;            // mfix, mfix-21: smooth the sign(omega) switch near omega = 0
 };
 struct RollingTorque {
   Vec3 on_i, on_j;

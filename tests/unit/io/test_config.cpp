@@ -81,6 +81,18 @@ TEST(Config, UnknownSectionAndLaw) {
   expect_error(t, "epsdd", {"rolling.law", "epsdd", "did you mean 'epsd'"});
 }
 
+TEST(Config, Mfix21RollingLengthInMetres) {
+  // The paper's 0.6 read as MFiX 21.3 reads it (a length) loads; beyond 1 m is refused.
+  const std::string from = "law = \"mfix\", friction = 0.6";
+  const std::string ok = replace(base(), from, "law = \"mfix-21\", length_m = 0.6");
+  ContactModel model;
+  derive_case(config::load_case_text(ok, "case.toml"), &model);
+  EXPECT_EQ(model.pair(0, 0).law_names[2], "mfix-21");
+  EXPECT_EQ(model.pair(0, 0).rp.length, 0.6);
+  expect_error(replace(base(), from, "law = \"mfix-21\", length_m = 1.5"), "length_m = 1.5",
+               {"rolling.length_m", "1.5", "[0, 1]"});
+}
+
 TEST(Config, MissingRequiredKey) {
   const std::string t = replace(base(), "true_density_kg_m3 = 1567\n", "");
   const std::string msg = error_of(t);

@@ -280,6 +280,88 @@ TEST(RollingMfix, RegularizedOnlyBelowTenStepsOfSpin) {
   EXPECT_NEAR(law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z, -0.25 * mag, 1e-15);
 }
 
+// MFiX 21.3's form with L = mu_r d is MFiX 25.x's (`mfix`): the same torque on both particles,
+// at rest, rolling (|omega| > w_eps) and in the regularized stop, with and without `regularize`.
+TEST(RollingMfix21, SameTorqueAsMfixWhenLengthIsMuRTimesD) {
+  const double mu_r = 0.6, d = 1e-2, dt = 1e-5;
+  for (bool regularize : {true, false}) {
+    Laws mfix, mfix21;
+    mfix.rolling = "mfix";
+    mfix.rolling_p = {{"friction", mu_r}, {"regularize", regularize ? 1.0 : 0.0}};
+    mfix21.rolling = "mfix-21";
+    mfix21.rolling_p = {{"length_m", mu_r * d}, {"regularize", regularize ? 1.0 : 0.0}};
+    const ContactLaw a = test::law_of(mfix, false), b = test::law_of(mfix21, false);
+    ContactGeometry g = geometry(1e-4);
+    const double w_eps = 10 * mu_r * d * 1e4 * 1e-4 * dt / g.inertia_i;  // 6 rad/s
+    for (double w : {0.0, 0.25 * w_eps, 2 * w_eps, 300.0}) {
+      g.omega_i = {0.6 * w, 0, -0.8 * w};
+      g.omega_j = {0, w, 0};
+      Vec3 spring{};
+      const RollingTorque ta = a.rolling(a.rp, g, a.np, {}, 0.0, spring, dt);
+      const RollingTorque tb = b.rolling(b.rp, g, b.np, {}, 0.0, spring, dt);
+      if (w > 0.0) {
+        EXPECT_GT(norm(ta.on_i), 0.0);  // the comparison is not 0 = 0
+      }
+      EXPECT_NEAR(norm(tb.on_i - ta.on_i), 0.0, 1e-16) << w << " " << regularize;
+      EXPECT_NEAR(norm(tb.on_j - ta.on_j), 0.0, 1e-16) << w << " " << regularize;
+    }
+  }
+}
+
+TEST(RollingMfix21, NoLeverArmSameTorqueOnUnequalSpheres) {
+  // R_i = 5 mm, R_j = 10 mm: MFiX 21.3 applies L k_n delta_n to both; `mfix` would apply
+  // mu_r d_i and mu_r d_j, 1:2.
+  Laws l;
+  l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
+  l.rolling = "mfix-21";
+  l.rolling_p = {{"length_m", 0.6}, {"regularize", 0.0}};
+  const ContactLaw law = test::law_of(l, false);
+  BodyState i, j;
+  i.radius = 5e-3, j.radius = 10e-3;
+  i.mass = 1e-3, j.mass = 8e-3;
+  i.inertia = 0.4 * i.mass * 25e-6, j.inertia = 0.4 * j.mass * 100e-6;
+  i.inv_inertia = 1 / i.inertia, j.inv_inertia = 1 / j.inertia;
+  i.x = {15e-3 - 1e-4, 0, 0};
+  i.omega = {0, 0, 3.0};
+  j.omega = {-2.0, 0, 0};
+  const ContactGeometry g = pair_geometry(i, j);
+  Vec3 spring{};
+  const RollingTorque t = law.rolling(law.rp, g, law.np, {}, 0.0, spring, 1e-5);
+  const double mag = 0.6 * 1e4 * 1e-4;  // L k_n delta_n = 0.6 N m
+  EXPECT_NEAR(t.on_i.z, -mag, 1e-12);
+  EXPECT_NEAR(t.on_j.x, mag, 1e-12);
+  EXPECT_NEAR(norm(t.on_i), mag, 1e-12);
+  EXPECT_NEAR(norm(t.on_j), mag, 1e-12);
+  // Against a wall: i only.
+  const ContactLaw wall = test::law_of(l, true);
+  const ContactGeometry gw = wall_geometry(i, {1, 0, 0}, 5e-3 - 1e-4, {});
+  const RollingTorque tw = wall.rolling(wall.rp, gw, wall.np, {}, 0.0, spring, 1e-5);
+  EXPECT_NEAR(tw.on_i.z, -mag, 1e-12);
+  EXPECT_EQ(norm(tw.on_j), 0.0);
+}
+
+TEST(RollingMfix21, RegularizedStopIsTheSameViscousCoefficientForAnyLength) {
+  // w_eps = 10 T dt / I grows with T = L k_n delta_n, so below it the torque is -I omega/(10 dt)
+  // for every L: the coefficient of the stability argument (rolling_mfix.hpp) does not grow with
+  // the paper's 0.6 read as metres. At 2 w_eps the torque is MFiX's, -T.
+  const double dt = 1e-5;
+  for (double length : {6e-3, 0.6}) {
+    Laws l;
+    l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
+    l.rolling = "mfix-21";
+    l.rolling_p = {{"length_m", length}};
+    const ContactLaw law = test::law_of(l, false);
+    ContactGeometry g = geometry(1e-4);
+    const double mag = length * 1e4 * 1e-4, w_eps = 10 * mag * dt / g.inertia_i;
+    Vec3 spring{};
+    g.omega_i = {0, 0, 2 * w_eps};
+    EXPECT_NEAR(law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z / -mag, 1.0, 1e-12);
+    g.omega_i = {0, 0, 0.25 * w_eps};
+    const double c = -law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z / g.omega_i.z;
+    EXPECT_NEAR(c / (g.inertia_i / (10 * dt)), 1.0, 1e-12) << length;
+  }
+}
+
 TEST(ContactModel, NoTouchClearsHistoryAndRangedCohesionStillPulls) {
   Laws l;
   l.tangential = "linear_history";
