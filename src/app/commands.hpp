@@ -30,8 +30,9 @@ struct BenchOptions {
 struct StudyOptions {
   std::string study_path;
   std::string out_dir;
-  int threads = 0;  // in all (0: every core)
-  int jobs = 1;     // runs side by side, sharing the threads
+  int threads = 0;       // in all (0: every core)
+  int jobs = 1;          // runs side by side, sharing the threads
+  bool dry_run = false;  // check every run's case and list the runs; run nothing
 };
 
 struct CalibrateOptions {

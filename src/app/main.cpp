@@ -108,6 +108,9 @@ int main(int argc, char** argv) {
       ->required();
   study_cmd->add_option("--threads", study.threads, "OpenMP threads in all (default: all cores)")
       ->check(CLI::Range(0, 1024));
+  study_cmd->add_flag("--dry-run", study.dry_run,
+                      "check every run's case and list the runs with their --set values; run "
+                      "nothing, write nothing");
   study_cmd->add_option("--jobs", study.jobs, "runs side by side, sharing the threads (default 1)")
       ->check(CLI::Range(1, 256));
 

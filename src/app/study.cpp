@@ -362,6 +362,15 @@ int study_command(const StudyOptions& o) {
       throw InputError({o.study_path, 0, 0}, "", fmt::format("run {}: {}", j.name, e.what()));
     }
   }
+  if (o.dry_run) {
+    for (const auto& j : jobs) {
+      fmt::print("{}  {}", (out / "runs" / j.name).string(), to_string(run_state(j.dir)));
+      for (const auto& s2 : j.overrides) fmt::print(" --set '{}'", s2);
+      fmt::print("\n");
+    }
+    fmt::print("{} runs, every case checked\n", jobs.size());
+    return kExitOk;
+  }
   JobRunner::lock(out);
   for (const auto& j : jobs) check_run_matches(j, "study");
   fs::copy_file(o.study_path, out / "study.toml", fs::copy_options::overwrite_existing);

@@ -35,6 +35,11 @@ rc=$?
 grep -q "outlet_diamter_mm" "$work/bad.err" || bad "the error does not name the key: $(cat "$work/bad.err")"
 [ -e "$work/bad/runs" ] && bad "a refused study started runs"
 
+# --dry-run lists the six runs and writes nothing.
+"$bin" study "$work/study.toml" --out "$work/s" --dry-run > "$work/dry.txt" 2>&1 || bad "--dry-run exited $?"
+[ "$(grep -c "silo.outlet_diameter_mm=" "$work/dry.txt")" -eq 6 ] || bad "--dry-run: $(cat "$work/dry.txt")"
+[ -e "$work/s" ] && bad "--dry-run wrote $work/s"
+
 # Start, and kill the study (SIGKILL) while its third run is in its discharge.
 "$bin" study "$work/study.toml" --out "$work/s" --threads 1 --jobs 1 > "$work/s1.log" 2>&1 &
 pid=$!
