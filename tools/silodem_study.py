@@ -112,13 +112,17 @@ def fig_metric(meta, rows, metric, ylabel, key):
     pos = {v: (number(v) if numeric.get(key) else i) for i, v in enumerate(xs)}
     series = order([point_key(r, others) for r in rows], False)
     fig, ax = sp.new_figure()
+    # Series side by side: a small shift (a factor on a log axis) so their seeds do not overlap.
+    values = [number(v) for v in xs] if numeric.get(key) else []
+    log_x = bool(values) and min(values) > 0 and max(values) / min(values) >= 8
     width = 0.0
-    if numeric.get(key) and len(xs) > 1:
-        width = 0.012 * (number(xs[-1]) - number(xs[0]))
+    if numeric.get(key) and len(xs) > 1 and not log_x:
+        width = 0.004 * (values[-1] - values[0])
     for si, s in enumerate(series):
         st = style(si)
         mx, my, me = [], [], []
-        offset = (si - (len(series) - 1) / 2) * width
+        shift = si - (len(series) - 1) / 2
+        offset = shift * width
         for x in xs:
             group = [r for r in rows if r[key] == x and point_key(r, others) == s
                      and r["state"] in ("finished", "failed")]
@@ -126,16 +130,21 @@ def fig_metric(meta, rows, metric, ylabel, key):
             for r, v in zip(group, vals):
                 if math.isfinite(v):
                     stopped = r.get("flow_stopped") == "true"
-                    ax.plot(pos[x] + offset, v, "x" if stopped else "o", ms=5 if stopped else 3,
+                    ax.plot(pos[x] * (1 + 0.01 * shift) if log_x else pos[x] + offset, v, "x" if stopped else "o", ms=5 if stopped else 3,
                             color=st["color"], alpha=0.8)
             m, sd = mean_std(vals)
             if math.isfinite(m):
-                mx.append(pos[x] + offset)
+                mx.append(pos[x] * (1 + 0.01 * shift) if log_x else pos[x] + offset)
                 my.append(m)
                 me.append(sd)
         if mx:
             ax.errorbar(mx, my, yerr=me, color=st["color"], ls=st["ls"], capsize=3,
                         label=point_label(others, s))
+    if log_x:
+        ax.set_xscale("log")
+        ax.set_xticks(values)
+        ax.set_xticklabels(xs)
+        ax.minorticks_off()
     if not numeric.get(key):
         ax.set_xticks(range(len(xs)))
         ax.set_xticklabels(xs, rotation=20 if len(xs) > 4 else 0)
