@@ -125,7 +125,7 @@ def fig_metric(meta, rows, metric, ylabel, key):
         offset = shift * width
         for x in xs:
             group = [r for r in rows if r[key] == x and point_key(r, others) == s
-                     and r["state"] in ("finished", "failed")]
+                     and r["state"] == "finished"]
             vals = [number(r[metric]) for r in group]
             for r, v in zip(group, vals):
                 if math.isfinite(v):
@@ -165,7 +165,7 @@ def finished_runs(study_dir, rows, keys):
     """[(point, run)] of the finished runs with an outlet.csv."""
     got = []
     for r in rows:
-        if r["state"] not in ("finished", "failed"):
+        if r["state"] != "finished":
             continue
         try:
             run = sp.Run(os.path.join(study_dir, "runs", r["run"]))
@@ -212,7 +212,7 @@ def point_rows(meta, rows):
     out = []
     for p in order([point_key(r, keys) for r in rows], False):
         group = [r for r in rows if point_key(r, keys) == p]
-        done = [r for r in group if r["state"] in ("finished", "failed")]
+        done = [r for r in group if r["state"] == "finished"]
         stopped = sum(r.get("flow_stopped") == "true" for r in done)
         cells = list(p) + ["{}/{}".format(len(done), len(group)), str(stopped)]
         for metric, _ in METRICS[:5]:
@@ -233,10 +233,14 @@ def write_html(study_dir, meta, rows, figures):
                              len(rows),
                              sp.esc("{} to {} s after the valve opened".format(*win))
                              if win[1] > win[0] else "none")]
-    headers = keys + ["runs done", "flow stopped"] + [m for m, _ in METRICS[:5]]
+    headers = keys + ["runs finished", "flow stopped"] + [m for m, _ in METRICS[:5]]
     parts += ["<h2>Grid points (mean \u00b1 standard deviation over the seeds)</h2>",
               sp.html_table(headers, point_rows(meta, rows),
                             numeric=tuple(range(len(keys), len(headers))))]
+    failed = [r["run"] for r in rows if r["state"] == "failed"]
+    if failed:
+        parts.append('<p class="alert">A guard stopped {} run(s) (left out of the means and '
+                     'figures; see logs/): {}</p>'.format(len(failed), sp.esc(", ".join(failed))))
     stopped = [r["run"] for r in rows if r.get("flow_stopped") == "true"]
     if stopped:
         parts.append('<p class="alert">Flow stopped (arched) in {} of {} runs.</p>'.format(

@@ -3,17 +3,20 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <sched.h>
 #include <sys/file.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <fstream>
 #include <map>
 #include <thread>
 
@@ -59,40 +62,59 @@ std::vector<char*> pointers(std::vector<std::string>& v) {
   return p;
 }
 
-// Starts `args` (args[0] the executable) with stdout and stderr appended to `log`; the child is
-// in its own process group (a Ctrl-C reaches only the runner, which forwards one SIGTERM) and
-// dies with its parent.
+// Starts `args` (args[0] a name for the executable; the binary run is /proc/self/exe, this very
+// build even if its file was replaced since) with stdout and stderr appended to `log`. The child
+// is in its own process group (a Ctrl-C reaches only the runner, which forwards one SIGTERM) and
+// dies with its parent. SIGINT, SIGTERM and SIGHUP are blocked from before the fork until the
+// child has reset their handlers, so a signal forwarded at once is not swallowed by ours.
 pid_t start_child(std::vector<std::string> args, std::vector<std::string> env,
                   const fs::path& log) {
   const pid_t parent = getpid();
   const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (fd < 0) throw std::runtime_error(fmt::format("cannot open '{}'", log.string()));
   const std::vector<char*> argv = pointers(args), envp = pointers(env);
+  sigset_t block, old;
+  sigemptyset(&block);
+  sigaddset(&block, SIGINT), sigaddset(&block, SIGTERM), sigaddset(&block, SIGHUP);
+  sigprocmask(SIG_BLOCK, &block, &old);
   const pid_t pid = fork();
-  if (pid < 0) {
-    close(fd);
-    throw std::runtime_error("fork failed");
-  }
   if (pid == 0) {  // only async-signal-safe calls from here to exec
     setpgid(0, 0);
     prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (getppid() != parent) _exit(127);
     const int null = open("/dev/null", O_RDONLY);
-    if (null >= 0) dup2(null, STDIN_FILENO);
+    if (null >= 0) dup2(null, STDIN_FILENO), close(null);
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
     signal(SIGINT, SIG_DFL);
     signal(SIGTERM, SIG_DFL);
-    execve(argv[0], argv.data(), envp.data());
+    signal(SIGHUP, SIG_DFL);
+    sigprocmask(SIG_SETMASK, &old, nullptr);
+    execve("/proc/self/exe", argv.data(), envp.data());
+    static const char msg[] = "silodem study: could not start the run (execve failed)\n";
+    [[maybe_unused]] const auto n = write(STDERR_FILENO, msg, sizeof msg - 1);
     _exit(127);
   }
+  sigprocmask(SIG_SETMASK, &old, nullptr);
   close(fd);
+  if (pid < 0) throw std::runtime_error("fork failed");
   return pid;
+}
+
+// The last non-empty line of a log (for an error message).
+std::string last_line(const fs::path& log) {
+  std::ifstream in(log);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  return last;
 }
 
 }  // namespace
 
 int default_threads() {
+  cpu_set_t set;
+  if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
   return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
@@ -104,11 +126,14 @@ JobRunner::JobRunner(int threads, int jobs, fs::path log_dir, bool reports)
   g_stop.store(0);
   std::signal(SIGINT, on_stop_signal);
   std::signal(SIGTERM, on_stop_signal);
+  std::signal(SIGHUP, on_stop_signal);
+  std::signal(SIGCHLD, SIG_DFL);  // an inherited SIG_IGN would reap the children for us
 }
 
 JobRunner::~JobRunner() {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
+  std::signal(SIGHUP, SIG_DFL);
 }
 
 bool JobRunner::interrupted() const {
@@ -134,7 +159,7 @@ std::vector<JobOutcome> JobRunner::run(
     const std::vector<RunJob>& jobs, const std::function<void(std::size_t)>& on_done,
     const std::function<void(std::size_t, std::size_t, double)>& status) {
   fs::create_directories(log_dir_);
-  const std::string exe = fs::read_symlink("/proc/self/exe").string();
+  const std::string exe = "silodem";  // argv[0]; the binary is /proc/self/exe
   const std::vector<std::string> env = child_environment();
   std::vector<JobOutcome> out(jobs.size());
   std::deque<std::size_t> pending;
@@ -154,57 +179,69 @@ std::vector<JobOutcome> JobRunner::run(
   bool forwarded = false;
   std::string input_error;
   auto last_status = Clock::now() - std::chrono::seconds(10);
-  while (!pending.empty() || !running.empty()) {
-    if ((g_stop.load() || !input_error.empty()) && !forwarded) {
-      for (const auto& [pid, c] : running) kill(pid, SIGTERM);  // each writes its checkpoint
-      forwarded = true;
-      pending.clear();
-    }
-    while (!forwarded && running.size() < std::size_t(jobs_) && !pending.empty()) {
-      const std::size_t i = pending.front();
-      pending.pop_front();
-      const RunJob& j = jobs[i];
-      std::vector<std::string> args = {exe, "run"};
-      if (out[i].state == RunState::Resumable) {
-        args.insert(args.end(), {"--resume", j.dir.string()});  // the checkpoint's thread count
-      } else {
-        if (out[i].state == RunState::Restart) fs::remove_all(j.dir);
-        args.insert(args.end(),
-                    {j.case_path, "--out", j.dir.string(), "--threads", std::to_string(per_job_)});
-        for (const auto& s : j.overrides) args.insert(args.end(), {"--set", s});
+  // Whatever goes wrong here (a log that cannot be opened, a full disk), the running children
+  // are asked to checkpoint and are waited for before the error goes up.
+  try {
+    while (!pending.empty() || !running.empty()) {
+      if ((g_stop.load() || !input_error.empty()) && !forwarded) {
+        for (const auto& [pid, c] : running) kill(-pid, SIGTERM);  // each writes its checkpoint
+        forwarded = true;
+        pending.clear();
       }
-      if (!reports_) args.emplace_back("--no-report");
-      const pid_t pid = start_child(args, env, log_dir_ / (j.name + ".log"));
-      running.emplace(pid, Child{i, Clock::now()});
-    }
-    int wstatus = 0;
-    const pid_t pid = running.empty() ? 0 : waitpid(-1, &wstatus, WNOHANG);
-    if (pid > 0 && running.count(pid)) {
-      const Child c = running.at(pid);
-      running.erase(pid);
-      const std::size_t i = c.job;
-      out[i].exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus)
-                                            : 128 + (WIFSIGNALED(wstatus) ? WTERMSIG(wstatus) : 0);
-      out[i].state = run_state(jobs[i].dir);
-      if (out[i].exit_code == kExitInput && input_error.empty())
-        input_error = fmt::format("run {} refused its input (see {})", jobs[i].name,
-                                  (log_dir_ / (jobs[i].name + ".log")).string());
-      if (out[i].state == RunState::Finished || out[i].state == RunState::Failed) {
-        ++done;
-        wall_sum += std::chrono::duration<double>(Clock::now() - c.start).count();
-        ++timed;
-        on_done(i);
+      while (!forwarded && running.size() < std::size_t(jobs_) && !pending.empty()) {
+        const std::size_t i = pending.front();
+        pending.pop_front();
+        const RunJob& j = jobs[i];
+        std::vector<std::string> args = {exe, "run"};
+        if (out[i].state == RunState::Resumable) {
+          args.insert(args.end(), {"--resume", j.dir.string()});  // the checkpoint's thread count
+        } else {
+          if (out[i].state == RunState::Restart) fs::remove_all(j.dir);
+          args.insert(args.end(), {j.case_path, "--out", j.dir.string(), "--threads",
+                                   std::to_string(per_job_)});
+          for (const auto& s : j.overrides) args.insert(args.end(), {"--set", s});
+        }
+        if (!reports_) args.emplace_back("--no-report");
+        const pid_t pid = start_child(args, env, log_dir_ / (j.name + ".log"));
+        running.emplace(pid, Child{i, Clock::now()});
       }
-    } else if (pid <= 0) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      int wstatus = 0;
+      const pid_t pid = running.empty() ? 0 : waitpid(-1, &wstatus, WNOHANG);
+      if (pid > 0 && running.count(pid)) {
+        const Child c = running.at(pid);
+        running.erase(pid);
+        const std::size_t i = c.job;
+        out[i].exit_code = WIFEXITED(wstatus)
+                               ? WEXITSTATUS(wstatus)
+                               : 128 + (WIFSIGNALED(wstatus) ? WTERMSIG(wstatus) : 0);
+        out[i].state = run_state(jobs[i].dir);
+        if (out[i].exit_code == kExitInput && input_error.empty())
+          input_error = fmt::format("run {} refused its input: {} (log: {})", jobs[i].name,
+                                    last_line(log_dir_ / (jobs[i].name + ".log")),
+                                    (log_dir_ / (jobs[i].name + ".log")).string());
+        if (out[i].state == RunState::Finished || out[i].state == RunState::Failed) {
+          ++done;
+          wall_sum += std::chrono::duration<double>(Clock::now() - c.start).count();
+          ++timed;
+          on_done(i);
+        }
+      } else if (pid < 0 && errno == ECHILD) {
+        running.clear();  // reaped behind our back: their directories tell what happened
+      } else if (pid <= 0) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+      if (Clock::now() - last_status > std::chrono::seconds(1)) {
+        last_status = Clock::now();
+        const double left = double(pending.size()) + 0.5 * double(running.size());
+        status(done, running.size(), timed > 0 ? wall_sum / timed * left / jobs_ : -1.0);
+      }
     }
-    if (Clock::now() - last_status > std::chrono::seconds(1)) {
-      last_status = Clock::now();
-      const double left = double(pending.size()) + 0.5 * double(running.size());
-      status(done, running.size(), timed > 0 ? wall_sum / timed * left / jobs_ : -1.0);
-    }
+  } catch (...) {
+    for (const auto& [pid, c] : running) kill(-pid, SIGTERM);
+    for (const auto& [pid, c] : running) waitpid(pid, nullptr, 0);
+    throw;
   }
-  if (!input_error.empty()) throw InputError({}, "study", input_error);
+  if (!input_error.empty()) throw InputError({}, "", input_error);
   return out;
 }
 

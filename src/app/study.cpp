@@ -62,8 +62,14 @@ std::vector<std::string> metric_columns() {
           "window_rate_kg_s",
           "outlet_mean_calorific_kcal_kg",
           "particles_lost",
-          "k",
           "wall_time_s"};
+}
+
+std::string csv_text(const std::string& s) {
+  if (s.find_first_of(",\"\n\r ") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return q + "\"";
 }
 
 std::vector<std::string> metric_cells(const RunMetrics* m, RunState state) {
@@ -74,7 +80,7 @@ std::vector<std::string> metric_cells(const RunMetrics* m, RunState state) {
     return cells;
   }
   return {to_string(state),
-          m->end,
+          csv_text(m->end),
           m->flow_stopped ? "true" : "false",
           num(m->filled_mass_kg),
           num(m->discharged_mass_kg),
@@ -84,7 +90,6 @@ std::vector<std::string> metric_cells(const RunMetrics* m, RunState state) {
           num(m->window_rate_kg_s),
           num(m->outlet_mean_calorific_kcal_kg),
           fmt::format("{}", m->particles_lost),
-          num(m->k),
           num(m->wall_time_s)};
 }
 
@@ -123,6 +128,32 @@ struct Study {
 
 SourcePlace place_of(const std::string& file, const toml::node& n) {
   return {file, int(n.source().begin.line), int(n.source().begin.column)};
+}
+
+// Refuses a key of `t` that is present with another type than `type` (a wrong type must not be
+// ignored: `seeds = 3` would otherwise run seed 1 only). `type`: string, bool, array, table,
+// "array of strings".
+void expect_type(const std::string& file, const toml::table& t, const char* key,
+                 const std::string& type, const std::string& shown_key = {}) {
+  const toml::node* n = t.get(key);
+  if (!n) return;
+  bool ok = type == "string"  ? n->is_string()
+            : type == "bool"  ? n->is_boolean()
+            : type == "array" ? n->is_array()
+            : type == "table" ? n->is_table()
+                              : n->is_array();
+  if (ok && type == "array of strings")
+    for (const auto& x : *n->as_array()) ok = ok && x.is_string();
+  if (!ok)
+    throw InputError(place_of(file, *n), shown_key.empty() ? key : shown_key,
+                     fmt::format("must be {} {}", type == "array" ? "an" : "a", type));
+}
+
+// simulation.seed comes from seeds = [...]: a seed set elsewhere would be overridden silently.
+void refuse_seed_key(const SourcePlace& place, const std::string& item, const char* where) {
+  if (item.rfind("simulation.seed", 0) == 0)
+    throw InputError(place, where,
+                     fmt::format("'{}': the seed of each run comes from seeds = [...]", item));
 }
 
 // A value in TOML syntax (for --set) and as a label.
@@ -164,6 +195,14 @@ Study load_study(const std::string& file) {
       throw InputError(place_of(file, v), std::string(k.str()),
                        "unknown key (allowed: title, base, seeds, set, window, combine, "
                        "run_reports, [[vary]])");
+  expect_type(file, t, "title", "string");
+  expect_type(file, t, "base", "string");
+  expect_type(file, t, "seeds", "array");
+  expect_type(file, t, "set", "array of strings");
+  expect_type(file, t, "window", "array");
+  expect_type(file, t, "combine", "string");
+  expect_type(file, t, "run_reports", "bool");
+  expect_type(file, t, "vary", "array");
   Study s;
   s.title = t["title"].value_or(std::string());
   const auto base = t["base"].value<std::string>();
@@ -185,11 +224,17 @@ Study load_study(const std::string& file) {
     }
   }
   if (s.seeds.empty()) s.seeds = {1};
+  for (std::size_t i = 1; i < s.seeds.size(); ++i)
+    if (std::find(s.seeds.begin(), s.seeds.begin() + long(i), s.seeds[i]) !=
+        s.seeds.begin() + long(i))
+      throw InputError(place_of(file, *t.get("seeds")), "seeds",
+                       fmt::format("seed {} is listed twice", s.seeds[i]));
   if (const auto* a = t["set"].as_array()) {
     for (const auto& n : *a) {
       const auto v = n.value<std::string>();
       if (!v || v->find('=') == std::string::npos)
         throw InputError(place_of(file, n), "set", "each item must be a string \"key=value\"");
+      refuse_seed_key(place_of(file, n), *v, "set");
       s.fixed.push_back(*v);
     }
   }
@@ -216,12 +261,19 @@ Study load_study(const std::string& file) {
     const toml::table* vt = n.as_table();
     if (!vt) throw InputError(place_of(file, n), "vary", "each [[vary]] must be a table");
     const SourcePlace here = place_of(file, n);
+    expect_type(file, *vt, "key", "string", "vary.key");
+    expect_type(file, *vt, "keys", "array of strings", "vary.keys");
+    expect_type(file, *vt, "values", "array", "vary.values");
+    expect_type(file, *vt, "name", "string", "vary.name");
+    expect_type(file, *vt, "labels", "array of strings", "vary.labels");
+    expect_type(file, *vt, "sets", "array", "vary.sets");
     Vary v;
     std::vector<std::string> keys;
     if (const auto k = (*vt)["key"].value<std::string>()) keys.push_back(*k);
     if (const auto* ka = (*vt)["keys"].as_array())
       for (const auto& k : *ka)
         if (const auto ks = k.value<std::string>()) keys.push_back(*ks);
+    for (const auto& k : keys) refuse_seed_key(here, k, "vary.key");
     for (const auto& [k, x] : *vt) {
       const std::string ks(k.str());
       if (ks != "key" && ks != "keys" && ks != "values" && ks != "name" && ks != "labels" &&
@@ -257,8 +309,14 @@ Study load_study(const std::string& file) {
           throw InputError(place_of(file, (*labels)[i]), "vary.labels",
                            "each label a string, each set a list of \"key=value\" strings");
         std::vector<std::string> its;
-        for (const auto& it : *items)
-          if (const auto s2 = it.value<std::string>()) its.push_back(*s2);
+        for (const auto& it : *items) {
+          const auto s2 = it.value<std::string>();
+          if (!s2 || s2->find('=') == std::string::npos)
+            throw InputError(place_of(file, it), "vary.sets",
+                             "each item must be a string \"key=value\"");
+          refuse_seed_key(place_of(file, it), *s2, "vary.sets");
+          its.push_back(*s2);
+        }
         v.labels.push_back(*label);
         v.sets.push_back(its);
       }
@@ -269,10 +327,13 @@ Study load_study(const std::string& file) {
       throw InputError(here, "vary", "needs values = [...] (with key or keys) or labels + sets");
     }
     if (v.labels.empty()) throw InputError(here, "vary." + v.name, "no values");
-    if (path_safe(v.name) != v.name || v.name == "seed" || v.name == "run")
+    const auto cols = metric_columns();
+    if (path_safe(v.name) != v.name || v.name == "seed" || v.name == "run" ||
+        std::find(cols.begin(), cols.end(), v.name) != cols.end())
       throw InputError(here, "vary.name",
-                       fmt::format("'{}': a name of letters, digits, '.', '+', '-' (not seed or "
-                                   "run); give name = \"...\"",
+                       fmt::format("'{}': a name of letters, digits, '.', '+', '-', other than "
+                                   "seed, run and the metric columns of study.csv; give name = "
+                                   "\"...\"",
                                    v.name));
     for (const auto& w : s.vary)
       if (w.name == v.name)
@@ -289,14 +350,6 @@ Study load_study(const std::string& file) {
                                      s.vary.front().name, s.vary.front().labels.size(), v.name,
                                      v.labels.size()));
   return s;
-}
-
-// A CSV cell: quoted (quotes doubled) if it holds a comma, a quote or a space.
-std::string csv_cell(const std::string& s) {
-  if (s.find_first_of(",\" ") == std::string::npos) return s;
-  std::string q = "\"";
-  for (char ch : s) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-  return q + "\"";
 }
 
 // Each point of the grid: the index into each Vary's variants.
@@ -351,6 +404,16 @@ int study_command(const StudyOptions& o) {
       rows.push_back(std::move(r));
     }
   }
+  // Two grid points with one name would share a directory (a repeated value, or labels that
+  // differ only in characters a directory name cannot hold).
+  for (std::size_t i = 0; i < jobs.size(); ++i)
+    for (std::size_t k = 0; k < i; ++k)
+      if (jobs[i].name == jobs[k].name)
+        throw InputError({o.study_path, 0, 0}, "vary",
+                         fmt::format("two runs would both be named '{}' (a value listed twice, or "
+                                     "labels equal after replacing characters other than "
+                                     "letters, digits, '.', '+', '-' by '-')",
+                                     jobs[i].name));
   // Every run's case is checked before anything starts: a bad key or value is one error now,
   // not a failed run an hour in.
   for (const auto& j : jobs) {
@@ -373,7 +436,8 @@ int study_command(const StudyOptions& o) {
   }
   JobRunner::lock(out);
   for (const auto& j : jobs) check_run_matches(j, "study");
-  fs::copy_file(o.study_path, out / "study.toml", fs::copy_options::overwrite_existing);
+  if (!fs::exists(out / "study.toml") || !fs::equivalent(o.study_path, out / "study.toml"))
+    fs::copy_file(o.study_path, out / "study.toml", fs::copy_options::overwrite_existing);
   {
     toml::array names, numeric;
     for (const auto& v : s.vary) names.push_back(v.name), numeric.push_back(v.numeric);
@@ -398,7 +462,7 @@ int study_command(const StudyOptions& o) {
     text += "\n";
     for (std::size_t i = 0; i < jobs.size(); ++i) {
       std::vector<std::string> cells = {jobs[i].name};
-      for (const auto& l : rows[i].labels) cells.push_back(csv_cell(l));
+      for (const auto& l : rows[i].labels) cells.push_back(csv_text(l));
       cells.push_back(std::to_string(rows[i].seed));
       for (const auto& c : metric_cells(metrics[i] ? &*metrics[i] : nullptr, states[i]))
         cells.push_back(c);
@@ -445,10 +509,9 @@ int study_command(const StudyOptions& o) {
       "wrote {}\n",
       finished, failed, (out / "logs").string(), jobs.size() - finished - failed,
       (out / "study.csv").string());
+  const int status = finished + failed < jobs.size() ? 1 : failed > 0 ? kExitSimulation : kExitOk;
   const int rc = run_tool("silodem_study.py", {out.string()}, true);
-  if (rc != 0) return rc;
-  if (finished + failed < jobs.size()) return 1;
-  return failed > 0 ? kExitSimulation : kExitOk;
+  return status != kExitOk ? status : rc;
 }
 
 }  // namespace silodem::app

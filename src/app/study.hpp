@@ -19,6 +19,8 @@ std::string path_safe(const std::string& s);
 // One progress line for a runner's status callback.
 std::string runner_status(const char* what, std::size_t done, std::size_t total,
                           std::size_t running, double eta_s, double elapsed_s);
+// A CSV cell of free text: quoted (quotes doubled) if it holds a comma, quote, space or newline.
+std::string csv_text(const std::string& s);
 // The metric columns of study.csv and calibration.csv, and a row of them for a run (empty cells
 // for a run that is not finished).
 std::vector<std::string> metric_columns();

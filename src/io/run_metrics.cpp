@@ -54,21 +54,26 @@ const char* to_string(RunState s) {
 
 RunState run_state(const fs::path& dir) {
   if (!fs::exists(dir) || (fs::is_directory(dir) && fs::is_empty(dir))) return RunState::Absent;
+  const bool checkpoint = fs::is_regular_file(dir / "checkpoint.bin");
   const fs::path summary = dir / "summary.json";
   if (fs::is_regular_file(summary)) {
-    nlohmann::json j;
+    bool complete = false;
+    std::string error, end;
     try {
-      j = read_json(summary);
-    } catch (const std::runtime_error&) {
-      j = nlohmann::json::object();  // written atomically, so only a foreign file gets here
+      const nlohmann::json j = read_json(summary);
+      complete = j.is_object() && j.value("complete", false);
+      if (j.is_object()) error = string_or_empty(j, "error"), end = string_or_empty(j, "end");
+    } catch (const std::exception&) {
+      // written atomically by `run`, so only a foreign or hand-edited file gets here
     }
-    if (j.value("complete", false)) return RunState::Finished;
-    // A guard stopped it: the same case would stop again, so the error is the run's result.
-    if (!string_or_empty(j, "error").empty() &&
-        string_or_empty(j, "end").rfind("interrupted", 0) != 0)
+    if (complete) return RunState::Finished;
+    // A guard stopped it: the same case would stop again, so the error is the run's result. An
+    // output failure (a full disk) keeps its checkpoint to be resumed once the cause is fixed.
+    const bool output_failure = end.find("(output)") != std::string::npos;
+    if (!error.empty() && end.rfind("interrupted", 0) != 0 && !(output_failure && checkpoint))
       return RunState::Failed;
   }
-  return fs::is_regular_file(dir / "checkpoint.bin") ? RunState::Resumable : RunState::Restart;
+  return checkpoint ? RunState::Resumable : RunState::Restart;
 }
 
 std::vector<OutletRow> read_outlet_csv(const fs::path& file) {
@@ -109,9 +114,13 @@ double window_rate(const std::vector<OutletRow>& bins, double t0, double t1, boo
 
 RunMetrics read_run_metrics(const fs::path& dir, double t0, double t1) {
   const nlohmann::json j = read_json(dir / "summary.json");
+  if (!j.is_object())
+    throw std::runtime_error(
+        fmt::format("'{}' is not a JSON object", (dir / "summary.json").string()));
   RunMetrics m;
-  m.complete = j.value("complete", false);
-  m.flow_stopped = j.value("flow_stopped", false);
+  m.complete = j.contains("complete") && j["complete"].is_boolean() && j["complete"].get<bool>();
+  m.flow_stopped =
+      j.contains("flow_stopped") && j["flow_stopped"].is_boolean() && j["flow_stopped"].get<bool>();
   m.end = string_or_empty(j, "end");
   m.error = string_or_empty(j, "error");
   m.filled_mass_kg = number_or_nan(j, "filled_mass_kg");
@@ -123,6 +132,9 @@ RunMetrics read_run_metrics(const fs::path& dir, double t0, double t1) {
   m.k = number_or_nan(j, "k");
   if (const auto it = j.find("particles_lost"); it != j.end() && it->is_number_integer())
     m.particles_lost = it->get<long>();
+  // A run stopped by its time limit says nothing about what came after: its window ends there.
+  const double end_time = number_or_nan(j, "discharge_end_time_s");
+  if (m.end == "time limit" && std::isfinite(end_time)) t1 = std::min(t1, end_time);
   if (t1 > t0 && fs::is_regular_file(dir / "outlet.csv"))
     m.window_rate_kg_s =
         window_rate(read_outlet_csv(dir / "outlet.csv"), t0, t1, m.emptied(), m.discharge_time_s);

@@ -39,7 +39,8 @@ struct RunMetrics {
 RunState run_state(const std::filesystem::path& dir);
 
 // Reads summary.json and outlet.csv. `window` = {t0, t1} s after the valve opened (t1 > t0) sets
-// window_rate_kg_s; without one (t1 <= t0) it is NaN. Throws std::runtime_error naming the file
+// window_rate_kg_s (for a run stopped by its time limit the window ends there); without one
+// (t1 <= t0) it is NaN. Throws std::runtime_error naming the file
 // if a file is missing or unreadable.
 RunMetrics read_run_metrics(const std::filesystem::path& dir, double t0 = 0, double t1 = 0);
 
@@ -59,7 +60,8 @@ double window_rate(const std::vector<OutletRow>& bins, double t0, double t1, boo
 
 // The names of the metrics a study or calibration can use, and the value of one of them (a
 // std::invalid_argument for an unknown name). For `calibration_value`, a run whose flow stopped
-// counts as no flow: its rates are 0 and its discharge time infinite.
+// did not empty: its mean rate counts 0 (its window rate already counts the zero outflow after
+// the arch) and its discharge time, like that of any run that did not empty, is infinite.
 const std::vector<std::string>& metric_names();
 double metric_value(const RunMetrics& m, const std::string& name);
 double calibration_value(const RunMetrics& m, const std::string& name);

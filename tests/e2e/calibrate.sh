@@ -27,12 +27,14 @@ args=(calibrate "$case" --param silo.outlet_diameter_mm --target "mean_rate_kg_s
 # Killed during its first evaluations, then started again.
 "$bin" "${args[@]}" > "$work/c1.log" 2>&1 &
 pid=$!
-for _ in $(seq 1 600); do
+for _ in $(seq 1 1200); do
   ls "$work/cal/runs/"*/checkpoint.bin > /dev/null 2>&1 && break
-  sleep 0.1
+  sleep 0.05
 done
-kill -9 $pid
-wait $pid 2>/dev/null
+ls "$work/cal/runs/"*/checkpoint.bin > /dev/null 2>&1 || bad "no evaluation reached its discharge"
+{ kill -9 $pid; wait $pid; } 2>/dev/null
+sleep 0.5
+pgrep -f -- "--out $work/cal/runs/" > /dev/null && bad "a run outlived the killed calibration"
 "$bin" "${args[@]}" > "$work/c2.log" 2>&1
 rc=$?
 [ $rc -eq 0 ] || bad "calibrate exited $rc: $(tail -3 "$work/c2.log")"
@@ -58,6 +60,8 @@ val = [float(r["mean"]) for r in rows if float(r["x"]) == found][0]
 assert abs(val - target) <= 0.03 * target, (val, target)
 assert os.path.getsize(os.path.join(d, "calibration.png")) > 0
 PY
+# The run killed in its discharge was resumed, not started again.
+grep -l "resumed at t = " "$work/cal/logs/"*.log > /dev/null || bad "the restarted search resumed no run"
 # Every run directory of the search has a finished run (none was left half done).
 for r in "$work/cal/runs/"*; do
   grep -q '"complete" : true' "$r/summary.json" || bad "$r is not finished"

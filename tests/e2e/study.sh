@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # End-to-end (issue 16): `silodem study` runs 3 values x 2 seeds of a shortened small-silo case to
-# the end; killed with SIGKILL in the middle and started again, it leaves the finished runs
-# alone, continues the unfinished one (from its checkpoint, or from the start if it was killed
-# in its fill) and the others, and ends with the same results as an uninterrupted run; it writes
-# study.csv with one row per run and the metric columns, the figures and report.html.
+# the end. Killed with SIGKILL in a run's discharge, then in a run's fill, then stopped with
+# SIGTERM, and started again each time, it leaves the finished runs alone, resumes the one killed
+# in its discharge from its checkpoint (with the same result as an uninterrupted run), starts the
+# one killed in its fill again, and ends; no child outlives a killed study. It writes study.csv
+# with one row per run and the metric columns, the figures and report.html.
 set -u
 bin=$1
 src=$2
@@ -40,34 +41,64 @@ grep -q "outlet_diamter_mm" "$work/bad.err" || bad "the error does not name the 
 [ "$(grep -c "silo.outlet_diameter_mm=" "$work/dry.txt")" -eq 6 ] || bad "--dry-run: $(cat "$work/dry.txt")"
 [ -e "$work/s" ] && bad "--dry-run wrote $work/s"
 
-# Start, and kill the study (SIGKILL) while its third run is in its discharge.
+# 1. Start, and kill the study (SIGKILL) as soon as its third run is in its discharge.
 "$bin" study "$work/study.toml" --out "$work/s" --threads 1 --jobs 1 > "$work/s1.log" 2>&1 &
 pid=$!
 third="$work/s/runs/outlet=34.0_seed=1"
+fourth="$work/s/runs/outlet=34.0_seed=2"
 for _ in $(seq 1 1200); do
   [ -f "$third/checkpoint.bin" ] && break
-  sleep 0.1
+  sleep 0.05
 done
 [ -f "$third/checkpoint.bin" ] || bad "the third run never reached its discharge: $(tail -3 "$work/s1.log")"
+{ kill -9 $pid; wait $pid; } 2>/dev/null
 sleep 0.5
-kill -9 $pid
-wait $pid 2>/dev/null
-sleep 0.5
-pgrep -f "run $src/tests/data/small_silo.toml --out $work/s/" > /dev/null &&
-  bad "a child run outlived the killed study"
+pgrep -f -- "--out $work/s/runs/" > /dev/null && bad "a child run outlived the killed study"
 grep -q '"complete" : true' "$work/s/runs/outlet=30.0_seed=1/summary.json" ||
-  bad "the first run was not finished before the kill (make the runs longer)"
+  bad "the first run was not finished before the kill"
 grep -q '"complete" : false' "$third/summary.json" || bad "the third run finished before the kill"
-# What the finished runs look like now: the restart must not touch them.
+# What the finished runs look like now: no later start may touch them.
 stat -c '%Y %i' "$work/s/runs/outlet=30.0_seed="{1,2}/summary.json > "$work/before.txt"
 
-"$bin" study "$work/study.toml" --out "$work/s" --threads 1 --jobs 2 > "$work/s2.log" 2>&1 ||
-  bad "the continued study exited $?: $(tail -3 "$work/s2.log")"
+# 2. Start again, and kill it while the fourth run is in its fill (no checkpoint yet).
+"$bin" study "$work/study.toml" --out "$work/s" --threads 1 --jobs 1 > "$work/s2.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 1200); do
+  [ -f "$fourth/summary.json" ] && [ ! -f "$fourth/checkpoint.bin" ] && break
+  sleep 0.05
+done
+{ kill -9 $pid; wait $pid; } 2>/dev/null
+sleep 0.5
+[ -f "$fourth/summary.json" ] && [ ! -f "$fourth/checkpoint.bin" ] ||
+  bad "the fourth run was not caught in its fill"
+grep -q '"complete" : true' "$third/summary.json" || bad "the third run was not resumed to its end"
+
+# 3. Start again with two runs side by side; SIGTERM stops it with the children checkpointed.
+"$bin" study "$work/study.toml" --out "$work/s" --threads 2 --jobs 2 > "$work/s3.log" 2>&1 &
+pid=$!
+for _ in $(seq 1 1200); do
+  ls "$work/s/runs/"*/checkpoint.bin > /dev/null 2>&1 && break
+  sleep 0.05
+done
+kill -TERM $pid
+wait $pid
+rc=$?
+[ $rc -eq 130 ] || bad "a study stopped by SIGTERM exited $rc, expected 130"
+grep -q "study interrupted" "$work/s3.log" || bad "no message on SIGTERM: $(tail -2 "$work/s3.log")"
+grep -l '"end" : "interrupted' "$work/s/runs/"*/summary.json > /dev/null ||
+  bad "no run says it was interrupted after the SIGTERM"
+
+# 4. Start again: it ends.
+"$bin" study "$work/study.toml" --out "$work/s" --threads 2 --jobs 2 > "$work/s4.log" 2>&1 ||
+  bad "the continued study exited $?: $(tail -3 "$work/s4.log")"
 stat -c '%Y %i' "$work/s/runs/outlet=30.0_seed="{1,2}/summary.json > "$work/after.txt"
-cmp -s "$work/before.txt" "$work/after.txt" || bad "the continued study redid a finished run"
+cmp -s "$work/before.txt" "$work/after.txt" || bad "a continued study redid a finished run"
 grep -q "resumed at t = " "$work/s/logs/outlet=34.0_seed=1.log" ||
-  bad "the interrupted run was not resumed from its checkpoint"
-grep -q "runs done" "$work/s2.log" || bad "no progress line"
+  bad "the run killed in its discharge was not resumed from its checkpoint"
+[ "$(grep -c '^filled ' "$work/s/logs/outlet=34.0_seed=2.log")" -ge 1 ] &&
+  [ "$(grep -c 'resumed at t = ' "$work/s/logs/outlet=34.0_seed=2.log")" -le 1 ] ||
+  bad "the run killed in its fill: $(cat "$work/s/logs/outlet=34.0_seed=2.log" | grep -v discharge | tail -5)"
+grep -q "runs done" "$work/s4.log" || bad "no progress line"
 
 # The killed and resumed run equals the same run made at once.
 "$bin" run "$src/tests/data/small_silo.toml" --out "$work/ref" --threads 1 --no-report \
@@ -115,9 +146,9 @@ html = open(os.path.join(d, "report.html")).read()
 assert "figures/mean_rate_kg_s_vs_outlet.png" in html and "outlet=38.0_seed=2" in html
 PY
 
-# A third start finds every run finished and starts none.
-"$bin" study "$work/study.toml" --out "$work/s" --threads 1 > "$work/s3.log" 2>&1 || bad "third start exited $?"
-grep -q "6 runs finished" "$work/s3.log" || bad "third start: $(tail -2 "$work/s3.log")"
+# Another start finds every run finished and starts none.
+"$bin" study "$work/study.toml" --out "$work/s" --threads 1 > "$work/s5.log" 2>&1 || bad "fifth start exited $?"
+grep -q "6 runs finished" "$work/s5.log" || bad "fifth start: $(tail -2 "$work/s5.log")"
 # A changed fixed setting is refused: it would mix two cases in one study.
 sed -i 's/discharge.max_time=4/discharge.max_time=5/' "$work/study.toml"
 "$bin" study "$work/study.toml" --out "$work/s" --threads 1 > /dev/null 2> "$work/s4.err"

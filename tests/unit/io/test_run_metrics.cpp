@@ -4,6 +4,7 @@
 // calibration convention for a stopped flow (rate 0, time infinite).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -20,7 +21,9 @@ std::vector<OutletRow> bins() {
 }
 
 fs::path fresh_dir(const char* name) {
-  const fs::path d = fs::temp_directory_path() / (std::string("silodem_metrics_") + name);
+  // Unique per process: two build trees may run their tests at once.
+  const fs::path d = fs::temp_directory_path() /
+                     (std::string("silodem_metrics_") + name + "_" + std::to_string(getpid()));
   fs::remove_all(d);
   fs::create_directories(d);
   return d;
@@ -57,8 +60,22 @@ TEST(RunMetrics, StateOfARunDirectory) {
   write(d / "summary.json",
         R"({"complete": false, "end": "error during the discharge", "error": "NaN"})");
   EXPECT_EQ(run_state(d), RunState::Failed);  // a guard: the last checkpoint stays, not redone
+  // An output failure (a full disk) keeps its checkpoint: resumed once the cause is fixed.
+  write(
+      d / "summary.json",
+      R"J({"complete": false, "end": "error during the discharge (output)", "error": "ENOSPC"})J");
+  EXPECT_EQ(run_state(d), RunState::Resumable);
   write(d / "summary.json", R"({"complete": true, "end": "emptied", "error": ""})");
   EXPECT_EQ(run_state(d), RunState::Finished);
+  fs::remove(d / "checkpoint.bin");
+  write(d / "summary.json",
+        R"({"complete": false, "end": "interrupted during the fill", "error": "signal 15"})");
+  EXPECT_EQ(run_state(d), RunState::Restart);  // no checkpoint: the fill starts again
+  write(d / "summary.json",
+        R"({"complete": false, "end": "error during the fill", "error": "overlap guard"})");
+  EXPECT_EQ(run_state(d), RunState::Failed);
+  write(d / "summary.json", "[1, 2]");  // not an object: as if there were no summary
+  EXPECT_EQ(run_state(d), RunState::Restart);
   fs::remove_all(d);
 }
 
@@ -86,5 +103,18 @@ TEST(RunMetrics, ReadsSummaryAndOutletAndAStoppedFlowCountsAsNoFlow) {
   EXPECT_TRUE(std::isinf(calibration_value(m, "discharge_time_s")));
   EXPECT_NEAR(calibration_value(m, "window_rate_kg_s"), 0.007 / 0.4, 1e-15);
   EXPECT_THROW(metric_value(m, "rate"), std::invalid_argument);
+  fs::remove_all(d);
+}
+
+TEST(RunMetrics, ATimeLimitEndsTheWindow) {
+  // Stopped by max_time at 0.3 s: [0.2, 0.6] is measured over [0.2, 0.3] only (3 g in 0.1 s),
+  // not as if nothing had left after the time limit.
+  const fs::path d = fresh_dir("limit");
+  write(d / "summary.json",
+        R"({"complete": true, "end": "time limit", "error": "", "flow_stopped": false,
+            "discharge_time_s": 0.29, "discharge_end_time_s": 0.3})");
+  write(d / "outlet.csv", "t_start_s,t_end_s,mass_kg\n0,0.1,0.001\n0.1,0.2,0.002\n0.2,0.3,0.003\n");
+  EXPECT_NEAR(read_run_metrics(d, 0.2, 0.6).window_rate_kg_s, 0.030, 1e-15);
+  EXPECT_TRUE(std::isinf(calibration_value(read_run_metrics(d), "discharge_time_s")));
   fs::remove_all(d);
 }
