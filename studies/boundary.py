@@ -144,6 +144,24 @@ def main(argv=None):
                  "mean contact force from the arch stress over the cohesive force")
     sp.legend_below(fig, *ax.get_legend_handles_labels(), ncol=3)
     fig.savefig(os.path.join(a.out, "boundary.png"), dpi=sp.DPI)
+    # The collapse: rate / dry against Pi, one series per (outlet, k, alpha).
+    fig, ax = sp.new_figure()
+    series = sorted({(r["outlet_mm"], r["k"], r["alpha"]) for r in rows})
+    for i, (d_mm, k, alpha) in enumerate(series):
+        sel = sorted((r for r in rows if (r["outlet_mm"], r["k"], r["alpha"]) == (d_mm, k, alpha)
+                      and math.isfinite(r["Pi"])), key=lambda r: r["Pi"])
+        ax.plot([r["Pi"] for r in sel], [r["rate_over_dry"] for r in sel],
+                marker="osD^v<>"[i % 7], color="C{}".format(i % 10), ls="-", lw=1,
+                label="D = {:.0f} mm, k = {:.0f}, alpha = {:.0f} (D/d_cg = {:.2f})".format(
+                    d_mm, k, alpha, sel[0]["D_over_dcg"] if sel else math.nan))
+    ax.set_xscale("log")
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("Pi = <f> / F_coh (-)")
+    ax.set_ylabel("mean rate / dry rate (-)")
+    sp.set_title(ax, "small silo: does the rate collapse onto Pi?",
+                 "stopped flows count as rate 0; each point the mean of its seeds")
+    sp.legend_below(fig, *ax.get_legend_handles_labels(), ncol=1)
+    fig.savefig(os.path.join(a.out, "collapse.png"), dpi=sp.DPI)
     print("| outlet (mm) | k | alpha | factor | D/d_cg | Bo_cg | Pi | seeds stopped | class | "
           "rate / dry (min-max kg/s) |")
     print("|---|---|---|---|---|---|---|---|---|---|")
