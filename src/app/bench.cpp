@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // `silodem bench`: the throughput of a real silo bed (issue 6). Fills the case's silo (by default
 // the paper's L3-I2 at k = 3 with the paper's cohesion) or loads that fill from a cache, then
-// times N steps of the settled bed (valve closed) and N steps right after the valve opens.
+// times N steps of the settled bed (valve closed) and N steps right after the valve opens. With
+// --flowing T it also discharges the bed to T s (cached as well) and times N steps there: a
+// flowing bed anyone can make again, not a checkpoint on one machine.
 // Figures: particle-steps per second, neighbour-list rebuilds, contacts per particle, peak
 // resident memory. BENCHMARKS.md records them.
 #include <fmt/format.h>
@@ -92,6 +94,42 @@ Phase time_steps(Simulation& sim, long steps, ProgressLine& progress, const char
   return ph;
 }
 
+// N steps of a discharge (particles leave through the outlet as in a run; no probes, no
+// checkpoints), in chunks so that a progress line can show.
+struct FlowPhase {
+  long steps = 0;
+  double particle_steps = 0.0, seconds = 0.0;
+  long rebuilds = 0;
+  DischargeEnd end = DischargeEnd::Interrupted;
+  double rate() const { return seconds > 0 ? particle_steps / seconds : 0.0; }
+};
+
+FlowPhase time_discharge(Simulation& sim, Discharge& dis, long steps, ProgressLine& progress,
+                         const std::string& what) {
+  FlowPhase ph;
+  long target = 0;
+  DischargeControl control;
+  control.stop = [&] {
+    ph.particle_steps += double(sim.particles().size());
+    return ++ph.steps >= target;
+  };
+  const long builds0 = sim.neighbors().builds;
+  std::string error;
+  const auto t0 = std::chrono::steady_clock::now();
+  const long chunk = std::max(1L, steps / 20);
+  while (ph.steps < steps && ph.end == DischargeEnd::Interrupted) {
+    target = std::min(steps, ph.steps + chunk);
+    const DischargeResult r = dis.run({}, control);
+    ph.end = r.end, error = r.error;
+    progress.show(fmt::format("{}: {} of {} steps", what, ph.steps, steps));
+  }
+  ph.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ph.rebuilds = sim.neighbors().builds - builds0;
+  if (ph.end == DischargeEnd::Error)
+    throw SimulationError(fmt::format("after {} steps: {}", ph.steps, error));
+  return ph;
+}
+
 // The bed and what a peer code needs to rebuild it (bench/peers/liggghts/): one row per
 // particle, and the silo, time step, skin and contact parameters as JSON.
 void export_bed(const fs::path& dir, const Case& c, const CaseReport& report,
@@ -174,39 +212,21 @@ int bench_from_checkpoint(const BenchOptions& o) {
   rc.reader = ByteReader({});  // the file's bytes go before the memory is measured
   const std::size_t n0 = sim->particles().size();
   const double t_start = sim->time() - dis.t0();
-  const long builds0 = sim->neighbors().builds;
 
   ProgressLine progress;
-  double particle_steps = 0.0;
-  long done = 0, target = 0;
-  DischargeControl control;
-  control.stop = [&] {
-    particle_steps += double(sim->particles().size());
-    return ++done >= target;
-  };
   const bool peak_reset = reset_peak_rss();
-  DischargeEnd end = DischargeEnd::Interrupted;
-  std::string error;
-  const auto t0 = std::chrono::steady_clock::now();
-  const long chunk = std::max(1L, o.steps / 20);
-  while (done < o.steps && end == DischargeEnd::Interrupted) {
-    target = std::min(o.steps, done + chunk);
-    const DischargeResult r = dis.run({}, control);
-    end = r.end, error = r.error;
-    progress.show(
-        fmt::format("discharge from t = {:.3f} s: {} of {} steps", t_start, done, o.steps));
-  }
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const FlowPhase ph = time_discharge(*sim, dis, o.steps, progress,
+                                      fmt::format("discharge from t = {:.3f} s", t_start));
   progress.finish();
-  if (end == DischargeEnd::Error)
-    throw SimulationError(fmt::format("after {} steps: {}", done, error));
+  const long done = ph.steps;
+  const double particle_steps = ph.particle_steps, seconds = ph.seconds;
+  const DischargeEnd end = ph.end;
   const long hwm_kb = status_kb("VmHWM");
   const long stepping_peak = peak_reset && hwm_kb > 0 ? hwm_kb * 1024 : peak_rss_bytes();
   const std::size_t n1 = sim->particles().size();
   const double simulated = double(done) * sim->settings().dt;
-  const long rebuilds = sim->neighbors().builds - builds0;
-  const double rate = seconds > 0 ? particle_steps / seconds : 0.0;
+  const long rebuilds = ph.rebuilds;
+  const double rate = ph.rate();
   const ContactTally tally = sim->contact_tally();
   long contacts = 0;
   for (int k : tally.particle_contacts) contacts += k;
@@ -335,6 +355,70 @@ int bench_command(const BenchOptions& o) {
   const double per_particle =
       double(stepping_peak - rss_start) / double(std::max<std::size_t>(n, 1));
 
+  // --flowing T: the bed T seconds into its discharge (cached too), and N steps of it.
+  FlowPhase flow;
+  std::size_t flow_n = 0;
+  double flow_t = 0.0;
+  bool flow_cached = false;
+  fs::path flow_cache;
+  if (o.flowing > 0) {
+    sim.reset();  // the settled bed's memory goes before the flowing bed's comes
+    ContactModel model2;
+    const CaseReport report2 = derive_case(c, &model2);
+    std::size_t valve2 = 0;
+    auto fsim = build_silo_simulation(c, report2, std::move(model2), &valve2, o.threads);
+    Discharge dis(*fsim, c.silo.geometry, valve2, c.discharge);
+    flow_cache =
+        cache_dir / fmt::format("flow-{:016x}.bin",
+                                text_hash(key_text + fmt::format("\n--flowing {}", o.flowing)));
+    if (!o.refill && fs::exists(flow_cache)) {
+      try {
+        ByteReader r = read_checkpoint(flow_cache.string());
+        fsim->load(r);
+        dis.load(r);
+        if (!r.done()) throw std::runtime_error("unread bytes at the end");
+      } catch (const std::exception& e) {
+        throw std::runtime_error(
+            fmt::format("the cached flowing bed {} cannot be read ({}); run again with --refill",
+                        flow_cache.string(), e.what()));
+      }
+      flow_cached = true;
+    } else {
+      ByteReader r = read_checkpoint(cache.string());  // the settled bed as filled
+      fsim->load(r);
+      dis.open();
+      DischargeControl control;
+      control.stop = [&] { return fsim->time() - dis.t0() >= o.flowing; };
+      const DischargeResult d = dis.run(
+          [&](const DischargeState& st) {
+            progress.show(
+                fmt::format("discharging the bed to t = {} s: t = {:.3f} s, {} "
+                            "particles left",
+                            o.flowing, st.t, st.particles_left));
+          },
+          control);
+      progress.finish();
+      if (d.end != DischargeEnd::Interrupted)
+        throw SimulationError(fmt::format(
+            "the bed's discharge ended ({}) at t = {:.3f} s, before --flowing {} s: choose an "
+            "earlier time",
+            d.end == DischargeEnd::Emptied       ? "the silo emptied"
+            : d.end == DischargeEnd::FlowStopped ? "the flow stopped"
+            : d.end == DischargeEnd::TimeLimit   ? "max_time"
+                                                 : d.error,
+            d.end_time, o.flowing));
+      ByteWriter w;
+      fsim->save(w);
+      dis.save(w);
+      write_checkpoint(flow_cache.string(), w);
+    }
+    flow_n = fsim->particles().size();
+    flow_t = fsim->time() - dis.t0();
+    flow = time_discharge(*fsim, dis, o.steps, progress,
+                          fmt::format("flowing bed at t = {:.3f} s", flow_t));
+    progress.finish();
+  }
+
   toml::table t{{"case", o.case_path},
                 {"particles", int64_t(n)},
                 {"k", report.k},
@@ -356,6 +440,15 @@ int bench_command(const BenchOptions& o) {
                 {"fill_cached", cached},
                 {"fill_wall_s", fill_wall},
                 {"cache", cache.string()}};
+  if (o.flowing > 0) {
+    t.insert("flowing_time_s", flow_t);
+    t.insert("flowing_particles", int64_t(flow_n));
+    t.insert("flowing_steps", int64_t(flow.steps));
+    t.insert("flowing_particle_steps_per_s", flow.rate());
+    t.insert("flowing_neighbor_rebuilds", int64_t(flow.rebuilds));
+    t.insert("flowing_cached", flow_cached);
+    t.insert("flowing_cache", flow_cache.string());
+  }
   if (o.json) {
     fmt::print("{}\n", to_json(t));
     return kExitOk;
@@ -372,6 +465,12 @@ int bench_command(const BenchOptions& o) {
       double(contacts) / double(std::max<std::size_t>(n, 1)), list_pairs,
       double(peak) / (1024.0 * 1024.0), double(stepping_peak) / (1024.0 * 1024.0),
       double(rss_start) / (1024.0 * 1024.0), per_particle);
+  if (o.flowing > 0)
+    fmt::print(
+        "  flowing bed : {:.3g} particle-steps/s at t = {:.3f} s of discharge ({} particles "
+        "at the start, {} steps, {:.1f} s, {} rebuilds){}\n",
+        flow.rate(), flow_t, flow_n, flow.steps, flow.seconds, flow.rebuilds,
+        flow_cached ? "; loaded from " + flow_cache.string() : "");
   return kExitOk;
 }
 

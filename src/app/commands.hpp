@@ -25,6 +25,7 @@ struct BenchOptions {
   bool refill = false;     // ignore a cached fill (and replace it)
   std::string export_dir;  // write the settled bed (bed.csv, bed.json) here for a peer code
   std::string from_dir;    // time the discharge of this run directory from its checkpoint
+  double flowing = 0.0;    // also time the bed this many seconds into its discharge (cached)
 };
 
 struct StudyOptions {

@@ -85,6 +85,12 @@ int main(int argc, char** argv) {
   auto* bench_export =
       bench_cmd->add_option("--export-bed", bench.export_dir,
                             "write the settled bed (bed.csv, bed.json) into this directory");
+  auto* bench_flowing =
+      bench_cmd
+          ->add_option("--flowing", bench.flowing,
+                       "also discharge the bed to this time (s after the valve opens; cached "
+                       "like the fill) and time --steps steps of the flowing bed there")
+          ->check(CLI::Range(0.0, 1e6));
   bench_cmd
       ->add_option("--from", bench.from_dir,
                    "time --steps steps of this run directory's discharge from its checkpoint (a "
@@ -94,7 +100,8 @@ int main(int argc, char** argv) {
       ->excludes(bench_case)
       ->excludes(bench_cache)
       ->excludes(bench_refill)
-      ->excludes(bench_export);
+      ->excludes(bench_export)
+      ->excludes(bench_flowing);
 
   app::StudyOptions study;
   auto* study_cmd = cli.add_subcommand(
