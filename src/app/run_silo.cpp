@@ -206,21 +206,42 @@ class SiloRun {
   }
 
   int discharge() {
-    const double t_wall0 = wall();
     DischargeControl control;
     control.stop = [] { return g_signal.load() != 0; };
     control.checkpoint = [this] { checkpoint(); };
     control.checkpoint_interval = c_.time.checkpoint_interval;
     control.checkpoint_wall_interval = c_.time.checkpoint_wall_interval;
+    // ETA: the mass still to leave at the recent outflow rate gives the simulated seconds to go;
+    // a step costs in proportion to the particles, which fall about linearly to none at a steady
+    // outflow, so the rest costs the recent wall time per particle and simulated second times
+    // half the particles left. The cost is smoothed over snapshots at least 1 s of wall apart (a
+    // shared machine changes speed). Not the fraction out so far, which overestimates the time
+    // while the first bins still fill.
+    double t_prev = -1.0, wall_prev = 0.0, n_prev = 0.0, cost = 0.0;
     try {
       dis_result_ = dis_->run(
           [&](const DischargeState& s) {
+            const double now = wall(), n = double(s.particles_left);
+            if (t_prev < 0) {
+              t_prev = s.t, wall_prev = now, n_prev = n;
+            } else if (now - wall_prev >= 1.0 && s.t > t_prev && n + n_prev > 0) {
+              const double c = (now - wall_prev) / ((s.t - t_prev) * 0.5 * (n + n_prev));
+              cost = cost > 0 ? 0.7 * cost + 0.3 * c : c;
+              t_prev = s.t, wall_prev = now, n_prev = n;
+            }
+            const double wall_per_s = cost * 0.5 * n;
             const double frac = s.discharged / std::max(s.filled, 1e-30);
+            const double to_go =
+                std::max(0.0, c_.discharge.target_fraction * s.filled - s.discharged);
+            std::string eta = "?";
+            if (s.recent_rate > 0 && wall_per_s > 0)
+              eta = fmt::format("{:.0f} s", to_go / s.recent_rate * wall_per_s);
+            else if (wall_per_s > 0)
+              eta = "? (no outflow now)";
             progress_.show(fmt::format(
                 "discharge t = {:.2f} s  particles left {}  out {:.3f} kg ({:.1f}%)  "
                 "rate {:.3f} kg/s  wall {:.0f} s  ETA {}",
-                s.t, s.particles_left, s.discharged, 100 * frac, s.recent_rate, wall(),
-                frac > 0.01 ? fmt::format("{:.0f} s", (wall() - t_wall0) * (1 / frac - 1)) : "?"));
+                s.t, s.particles_left, s.discharged, 100 * frac, s.recent_rate, wall(), eta));
           },
           control);
     } catch (const std::exception& e) {  // writing a probe row, a frame or a checkpoint failed
