@@ -54,25 +54,6 @@ Tools find_tools() {
 
 }  // namespace
 
-int report_command(const std::string& dir, bool quiet_if_unavailable) {
-  const Tools t = find_tools();
-  if (!t.problem.empty()) {
-    if (quiet_if_unavailable) {
-      fmt::print(stderr, "warning: figures and report.html not made: {}\n", t.problem);
-      return kExitOk;
-    }
-    throw std::runtime_error(t.problem);
-  }
-  if (!fs::is_regular_file(fs::path(dir) / "summary.json"))
-    throw InputError({}, "DIR", fmt::format("'{}' has no summary.json: not a run directory", dir));
-  const int rc = spawn({t.python, (fs::path(t.dir) / "silodem_report.py").string(), dir});
-  if (rc != 0) {
-    fmt::print(stderr, "error: the report script failed (exit {}) for {}\n", rc, dir);
-    return rc == 2 ? kExitInput : 1;
-  }
-  return kExitOk;
-}
-
 int run_tool(const std::string& script, const std::vector<std::string>& args,
              bool quiet_if_unavailable) {
   const Tools t = find_tools();
@@ -93,24 +74,27 @@ int run_tool(const std::string& script, const std::vector<std::string>& args,
   return kExitOk;
 }
 
+namespace {
+void require_run_dir(const std::string& dir) {
+  if (!fs::is_regular_file(fs::path(dir) / "summary.json"))
+    throw InputError({}, "DIR", fmt::format("'{}' has no summary.json: not a run directory", dir));
+}
+}  // namespace
+
+int report_command(const std::string& dir, bool quiet_if_unavailable) {
+  if (find_tools().problem.empty()) require_run_dir(dir);
+  return run_tool("silodem_report.py", {dir}, quiet_if_unavailable);
+}
+
 int compare_command(const std::vector<std::string>& dirs, const std::string& out,
                     const std::string& labels) {
-  const Tools t = find_tools();
-  if (!t.problem.empty()) throw std::runtime_error(t.problem);
+  if (const Tools t = find_tools(); !t.problem.empty()) throw std::runtime_error(t.problem);
   if (dirs.size() < 2) throw InputError({}, "DIR", "compare needs at least two run directories");
-  for (const auto& d : dirs)
-    if (!fs::is_regular_file(fs::path(d) / "summary.json"))
-      throw InputError({}, "DIR", fmt::format("'{}' has no summary.json: not a run directory", d));
-  std::vector<std::string> args = {t.python, (fs::path(t.dir) / "silodem_compare.py").string(),
-                                   "--out", out};
+  for (const auto& d : dirs) require_run_dir(d);
+  std::vector<std::string> args = {"--out", out};
   if (!labels.empty()) args.insert(args.end(), {"--labels", labels});
   args.insert(args.end(), dirs.begin(), dirs.end());
-  const int rc = spawn(args);
-  if (rc != 0) {
-    fmt::print(stderr, "error: the compare script failed (exit {})\n", rc);
-    return rc == 2 ? kExitInput : 1;
-  }
-  return kExitOk;
+  return run_tool("silodem_compare.py", args, false);
 }
 
 }  // namespace silodem::app
