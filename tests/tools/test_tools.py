@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Tests of tools/silodem_report.py and tools/silodem_compare.py.
+"""Tests of tools/silodem_report.py, silodem_compare.py, silodem_study.py, silodem_calibrate.py.
 
 Run: /usr/bin/python3 tests/tools/test_tools.py
 Builds synthetic run directories (known data) in a temporary directory, runs
@@ -22,6 +22,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 TOOLS = os.path.normpath(os.path.join(HERE, "..", "..", "tools"))
 REPORT = os.path.join(TOOLS, "silodem_report.py")
 COMPARE = os.path.join(TOOLS, "silodem_compare.py")
+STUDY = os.path.join(TOOLS, "silodem_study.py")
+CALIBRATE = os.path.join(TOOLS, "silodem_calibrate.py")
 PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
 sys.path.insert(0, TOOLS)
 
@@ -344,6 +346,105 @@ class CompareTest(ToolTestCase):
 
 
 # ---- in-process checks ----------------------------------------------------------------------
+
+
+# ---- study and calibration ------------------------------------------------------------------
+
+STUDY_COLS = ["state", "end", "flow_stopped", "filled_mass_kg", "discharged_mass_kg",
+              "discharged_fraction", "discharge_time_s", "mean_rate_kg_s", "window_rate_kg_s",
+              "outlet_mean_calorific_kcal_kg", "particles_lost", "wall_time_s"]
+
+
+def study_row(name, factor, k, seed, rate, state="finished", stopped=False):
+    """One study.csv row with a known mean rate."""
+    out = 0.0 if stopped else 1.6
+    end = "flow stopped (no outflow for stall_time)" if stopped else "emptied"
+    return [name, factor, k, seed, state, '"{}"'.format(end) if " " in end else end,
+            "true" if stopped else "false", 1.68, out, out / 1.68, 1.5, rate, rate, 4500.0, 0,
+            30.0]
+
+
+class StudyTest(ToolTestCase):
+    """silodem_study.py on a synthetic study: 2 factors x 2 k x 2 seeds, one arched, one failed."""
+
+    def make_study(self):
+        d = os.path.join(self.tmp, "study")
+        os.makedirs(os.path.join(d, "runs"))
+        with open(os.path.join(d, "study.json"), "w") as f:
+            json.dump({"title": "synthetic study", "base": "/x/case.toml", "vary": ["factor", "k"],
+                       "vary_numeric": [True, True], "window_s": [0.2, 1.0], "runs": 8}, f)
+        rows = []
+        # (factor, k): the two seeds' rates. (0.2, 4) seed 2 arched; (0.2, 3) seed 2 failed
+        # (a guard stopped it), with a rate that must not enter the mean.
+        rates = {("0.1", "3"): (1.0, 1.2), ("0.1", "4"): (0.8, 1.0), ("0.2", "3"): (0.5, 99.0),
+                 ("0.2", "4"): (0.4, 0.0)}
+        for (factor, k), pair in rates.items():
+            for seed, rate in zip((1, 2), pair):
+                name = "factor={}_k={}_seed={}".format(factor, k, seed)
+                failed = (factor, k) == ("0.2", "3") and seed == 2
+                stopped = (factor, k) == ("0.2", "4") and seed == 2
+                rows.append(study_row(name, factor, k, seed, rate,
+                                      "failed" if failed else "finished", stopped))
+                if not failed:
+                    make_run(os.path.join(d, "runs", name), probes=False, measured=False,
+                             scale=max(rate, 0.01))
+        with open(os.path.join(d, "study.csv"), "w") as f:
+            f.write(",".join(["run", "factor", "k", "seed"] + STUDY_COLS) + "\n")
+            for r in rows:
+                f.write(",".join(str(c) for c in r) + "\n")
+        return d
+
+    def test_study(self):
+        d = self.make_study()
+        p = run_tool(STUDY, d)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertNotIn("label without unit", p.stderr)
+        for metric in ("discharged_fraction", "mean_rate_kg_s", "window_rate_kg_s",
+                       "discharge_time_s", "outlet_mean_calorific_kcal_kg", "wall_time_s"):
+            for key in ("factor", "k"):
+                self.assertPng(os.path.join(d, "figures", "{}_vs_{}.png".format(metric, key)))
+        for name in ("outlet_rate.png", "outlet_cumulative.png", "outlet_calorific.png"):
+            self.assertPng(os.path.join(d, "figures", name))
+        html = read(os.path.join(d, "report.html"))
+        # Means +- sample standard deviations of the seeds: (1.0, 1.2) -> 1.1 +- 0.14;
+        # (0.8, 1.0) -> 0.9 +- 0.14; (0.4, 0) -> 0.2 +- 0.28 (the arched seed counts as its 0).
+        self.assertIn("1.1 \u00b1 0.14", html)
+        self.assertIn("0.9 \u00b1 0.14", html)
+        self.assertIn("0.2 \u00b1 0.28", html)
+        # The failed run is left out: its point has one seed, 0.5, and no 99 in any mean.
+        self.assertIn('<td>0.2</td><td>3</td><td class="num">1/2</td><td class="num">0</td>'
+                      '<td class="num">0.9524</td><td class="num">0.5</td>', html)
+        self.assertNotIn("49.75", html)
+        self.assertIn("A guard stopped 1 run(s)", html)
+        self.assertIn("Flow stopped (arched) in 1 of 8 runs", html)
+
+    def test_not_a_study(self):
+        p = run_tool(STUDY, self.tmp)
+        self.assertEqual(p.returncode, 2)
+        self.assertIn("not a study directory", p.stderr)
+
+
+class CalibrateTest(ToolTestCase):
+    """silodem_calibrate.py draws the metric against the parameter."""
+
+    def test_figure(self):
+        d = os.path.join(self.tmp, "cal")
+        os.makedirs(d)
+        with open(os.path.join(d, "calibration.json"), "w") as f:
+            json.dump({"params": ["silo.outlet_diameter_mm"], "metric": "mean_rate_kg_s",
+                       "target": 0.25, "tolerance": 0.03, "seeds": 1}, f)
+        with open(os.path.join(d, "calibration.csv"), "w") as f:
+            f.write("evaluation,x,seed,run,value,mean,standard_error," + ",".join(STUDY_COLS) +
+                    "\n")
+            for e, (x, v, stopped) in enumerate([(20.0, 0.0, True), (60.0, 0.9, False),
+                                                 (40.0, 0.28, False), (37.2, 0.245, False)]):
+                f.write("{},{},1,x={}_seed=1,{},{},0,finished,end,{},1,1,1,1,1,1,4500,0,10\n"
+                        .format(e, x, x, v, v, "true" if stopped else "false"))
+        p = run_tool(CALIBRATE, d)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertPng(os.path.join(d, "calibration.png"))
+        p = run_tool(CALIBRATE, self.tmp)
+        self.assertEqual(p.returncode, 2)
 
 
 class UnitTest(unittest.TestCase):
