@@ -124,7 +124,7 @@ def main(argv=None):
             "stopped": stopped, "class": cls, "rate_kg_s": mean(rates),
             "rate_over_dry": mean(rates) / dry_rate if dry_rate > 0 else math.nan,
             "rate_min": min(rates), "rate_max": max(rates)})
-    rows.sort(key=lambda r: (r["outlet_mm"], r["k"], r["alpha"], r["factor"]))
+    rows.sort(key=lambda r: (r["study"], r["outlet_mm"], r["k"], r["alpha"], r["factor"]))
     os.makedirs(a.out, exist_ok=True)
     cols = list(rows[0].keys())
     with open(os.path.join(a.out, "boundary.csv"), "w", newline="", encoding="utf-8") as f:
@@ -162,11 +162,17 @@ def main(argv=None):
                  "stopped flows count as rate 0; each point the mean of its seeds")
     sp.legend_below(fig, *ax.get_legend_handles_labels(), ncol=1)
     fig.savefig(os.path.join(a.out, "collapse.png"), dpi=sp.DPI)
-    print("| outlet (mm) | k | alpha | factor | D/d_cg | Bo_cg | Pi | seeds stopped | class | "
-          "rate / dry (min-max kg/s) |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    # Keys varied besides outlet, k, alpha and factor (e.g. a switch) get a column of their own.
+    extra = sorted({kv.split("=", 1)[0] for r in rows for kv in r["point"].split()} -
+                   {"outlet", "k", "alpha", "factor"})
+    print("| " + " | ".join(extra + ["outlet (mm)", "k", "alpha", "factor", "D/d_cg", "Bo_cg",
+                                      "Pi", "seeds stopped", "class",
+                                      "rate / dry (min-max kg/s)"]) + " |")
+    print("|" + "---|" * (len(extra) + 10))
     for r in rows:
-        print("| {:.0f} | {:.0f} | {:.0f} | {:g} | {:.2f} | {:.1f} | {:.3f} | {}/{} | {} | "
+        kv = dict(x.split("=", 1) for x in r["point"].split())
+        print("| " + "".join("{} | ".format(kv.get(e, "")) for e in extra) +
+              "{:.0f} | {:.0f} | {:.0f} | {:g} | {:.2f} | {:.1f} | {:.3f} | {}/{} | {} | "
               "{:.2f} ({:.3f}-{:.3f}) |".format(
                   r["outlet_mm"], r["k"], r["alpha"], r["factor"], r["D_over_dcg"], r["Bo_cg"],
                   r["Pi"], r["stopped"], r["seeds"], r["class"], r["rate_over_dry"],
