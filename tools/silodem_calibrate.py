@@ -29,12 +29,7 @@ UNITS = {"discharged_mass_kg": "kg", "discharge_time_s": "s", "mean_rate_kg_s": 
          "outlet_mean_calorific_kcal_kg": "kcal/kg"}
 
 
-def number(cell):
-    """A CSV cell as a float (NaN if empty or not a number; 'inf' stays infinite)."""
-    try:
-        return float(cell)
-    except (TypeError, ValueError):
-        return math.nan
+number = sp.cell_number
 
 
 def main(argv=None):

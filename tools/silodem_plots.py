@@ -62,6 +62,14 @@ def num(value):
         return None
 
 
+def cell_number(cell):
+    """A CSV cell as a float: NaN if empty or not a number ('inf' stays infinite)."""
+    try:
+        return float(cell)
+    except (TypeError, ValueError):
+        return math.nan
+
+
 def finite(value):
     """True for a finite number."""
     return value is not None and isinstance(value, (int, float)) and math.isfinite(value)

@@ -59,12 +59,7 @@ def load(study_dir):
     return meta, rows
 
 
-def number(cell):
-    """A CSV cell as a float (NaN if empty or not a number)."""
-    try:
-        return float(cell)
-    except (TypeError, ValueError):
-        return math.nan
+number = sp.cell_number
 
 
 def order(values, numeric):
