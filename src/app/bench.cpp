@@ -384,11 +384,37 @@ int bench_command(const BenchOptions& o) {
       }
       flow_cached = true;
     } else {
-      ByteReader r = read_checkpoint(cache.string());  // the settled bed as filled
-      fsim->load(r);
-      dis.open();
+      // The discharge to T takes hours at k = 3: it checkpoints into flow-*.resume.bin every
+      // few minutes of wall time, and a later bench with the same case and T continues from there.
+      const fs::path resume = fs::path(flow_cache).replace_extension(".resume.bin");
+      if (!o.refill && fs::exists(resume)) {
+        try {
+          ByteReader r = read_checkpoint(resume.string());
+          fsim->load(r);
+          dis.load(r);
+          if (!r.done()) throw std::runtime_error("unread bytes at the end");
+        } catch (const std::exception& e) {
+          throw std::runtime_error(fmt::format(
+              "the partly discharged bed {} cannot be read ({}); run again with --refill",
+              resume.string(), e.what()));
+        }
+        if (!o.json)
+          fmt::print("continuing the discharge to t = {} s from {} (t = {:.3f} s)\n", o.flowing,
+                     resume.string(), fsim->time() - dis.t0());
+      } else {
+        ByteReader r = read_checkpoint(cache.string());  // the settled bed as filled
+        fsim->load(r);
+        dis.open();
+      }
       DischargeControl control;
       control.stop = [&] { return fsim->time() - dis.t0() >= o.flowing; };
+      control.checkpoint = [&] {
+        ByteWriter w;
+        fsim->save(w);
+        dis.save(w);
+        write_checkpoint(resume.string(), w);
+      };
+      control.checkpoint_wall_interval = 300.0;
       const DischargeResult d = dis.run(
           [&](const DischargeState& st) {
             progress.show(
@@ -411,6 +437,8 @@ int bench_command(const BenchOptions& o) {
       fsim->save(w);
       dis.save(w);
       write_checkpoint(flow_cache.string(), w);
+      std::error_code ec;
+      fs::remove(resume, ec);
     }
     flow_n = fsim->particles().size();
     flow_t = fsim->time() - dis.t0();
