@@ -2,7 +2,7 @@
 // Throughput of one full time step, Simulation::step() (neighbour check and rebuild when due,
 // contact forces, velocity-Verlet integration), on a settled dense random bed of cohesive
 // coarse-grained coal (k = 3), for 1 and 2 OpenMP threads. The figure of merit is particle-steps
-// per second (issue 6); BENCHMARKS.md at the repository root holds the numbers.
+// per second (issue 6); BENCHMARKS.md at the repository root holds the numbers ("Scaling").
 //
 // The bed is made once per particle count and process: the paper's two coals at k = 3
 // (8.4 mm / 1567 kg/m^3 and 9.6 mm / 1268 kg/m^3, mixed at random) deposited on a jittered
@@ -498,7 +498,7 @@ const ContactModel& model() {
 }
 
 // ---- the settled bed, cached on disk --------------------------------------------------------
-// Settling the 1e6 bed takes 10-18 minutes, longer than timing it, so the settled state is kept
+// Settling the 1e6 bed takes minutes (bench/README.md), longer than timing it, so the state is kept
 // in $BENCH_STEP_CACHE (default ~/.cache/silodem; "0" = off) as bench_step-bed-v<V>-<n>.bin and
 // reused by later runs, including runs of other commits, which then time the same bed. Bump
 // kBedVersion when the lattice, the coals or the settling change.
@@ -637,7 +637,7 @@ void BM_StepRebuild(benchmark::State& state) {
 }
 
 // 1e4 to 1e6 particles: the cost per particle-step should not grow with the bed (issue 6). The
-// 1e5 and 1e6 beds take about 1 and 10-18 minutes to settle the first time (then they are cached).
+// 1e5 and 1e6 beds take minutes to settle the first time (bench/README.md; then they are cached).
 BENCHMARK(BM_Step)
     ->ArgNames({"particles", "omp_threads"})
     ->ArgsProduct({{10000, 50000, 100000, 1000000}, {1, 2}})

@@ -5,7 +5,7 @@
 // larger than the last-level cache, with 1 and 2 OpenMP threads. Bytes are counted as STREAM
 // counts them: copy and scale move 2 x 8 bytes per element, add and triad 3 x 8 (no
 // write-allocate traffic). The counter `bytes_per_second` is the figure to compare with the
-// bytes a particle-step moves (BENCHMARKS.md).
+// bytes a particle-step moves (BENCHMARKS.md, "Roofline (issue 19)"; bench/roofline_count.md).
 #include <benchmark/benchmark.h>
 
 #include <cstddef>

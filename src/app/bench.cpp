@@ -5,7 +5,8 @@
 // --flowing T it also discharges the bed to T s (cached as well) and times N steps there: a
 // flowing bed anyone can make again, not a checkpoint on one machine.
 // Figures: particle-steps per second, neighbour-list rebuilds, contacts per particle, peak
-// resident memory. BENCHMARKS.md records them.
+// resident memory. BENCHMARKS.md records them ("Settled silo bed", "Flowing beds", "Memory per
+// particle").
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <toml++/toml.h>

@@ -21,8 +21,8 @@
 
 // Three versions of the lane loop in the portable build, chosen when the program starts:
 // x86-64-v4 where the CPU has AVX-512 (4 doubles per instruction as AVX2, but 32 vector registers
-// instead of 16, so the loop keeps more of its values in registers: a quarter of the AVX2
-// version's stack accesses; +2.5-5% on 2 threads, +6-11% on 1 on the k = 3 silo bed), AVX2, and
+// instead of 16, so the loop keeps more of its values in registers and spills fewer of them to
+// the stack; the gain: BENCHMARKS.md, "What the engine does to be fast"), AVX2, and
 // the x86-64 baseline (SSE2, 2 doubles) elsewhere. CMakeLists.txt turns off fused multiply-adds
 // and 512-bit vectors for the portable build, so all three give the rounding of the scalar code.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(__AVX2__)

@@ -38,7 +38,7 @@ void ParticleStore::remove(std::size_t i) {
 // Keeps the order of the rest (one compaction pass over every array): swapping the last particle
 // into each hole, as remove() does, would put a particle from the top of a silo (filled last) among
 // those at its outlet, and a discharge removes thousands, until memory order no longer follows
-// space and the force loop waits for memory (BENCHMARKS.md, fourth session).
+// space and the force loop waits for memory (BENCHMARKS.md, "What the engine does to be fast").
 template <class T>
 static void compact(std::vector<T>& a, const std::vector<int>& to) {
   std::size_t w = 0;

@@ -208,8 +208,9 @@ void Simulation::pair_forces(int tid, double guard) {
   // which parts of the buffer to read: a thread's partners j lie mostly near its own i.
   std::size_t lo = n, hi = 0;
   // The data of the partner PF pairs ahead are requested before they are needed: in a bed
-  // larger than the caches the loop otherwise waits for them (1e6 particles: 161 -> 150 ms per
-  // step on one thread; no change on the 63k silo bed). Prefetches never fault.
+  // larger than the caches the loop otherwise waits for them (it pays on the 1e6-particle bed and
+  // changes nothing on the silo bed: BENCHMARKS.md, "What the engine does to be fast").
+  // Prefetches never fault.
   const std::size_t n_pairs = list_.partner.size();
   constexpr std::size_t PF = 16;
 #pragma omp for schedule(static)
