@@ -222,6 +222,52 @@ void VerletList::attach_history(const ParticleStore& p) {
   }
 }
 
+bool VerletList::remove(const ParticleStore& p, const std::vector<int>& to) {
+  const std::size_t n_old = to.size();
+  if (stashed_ || !built_for(n_old) || offset.size() != n_old + 1 ||
+      wall_offset.size() != n_old + 1)
+    return false;
+  // Monotone: new indices in old order, so every row stays sorted and (i < j) stays (i' < j').
+  std::size_t n_new = 0;
+  for (std::size_t k = 0; k < n_old; ++k)
+    if (to[k] >= 0) {
+      if (std::size_t(to[k]) != n_new) return false;
+      ++n_new;
+    }
+  if (n_new != p.size()) return false;
+  std::size_t w = 0, ww = 0, row = 0;
+  int e_begin = 0, we_begin = 0;
+  for (std::size_t i = 0; i < n_old; ++i) {
+    const int e_end = offset[i + 1], we_end = wall_offset[i + 1];
+    if (to[i] >= 0) {
+      for (int e = e_begin; e < e_end; ++e) {
+        const int j = to[std::size_t(partner[e])];
+        if (j < 0) continue;
+        partner[w] = j;
+        spring[w] = spring[std::size_t(e)];
+        if (rolling_springs) roll[w] = roll[std::size_t(e)];
+        ++w;
+      }
+      for (int e = we_begin; e < we_end; ++e) {
+        wall[ww] = wall[std::size_t(e)];
+        wall_spring[ww] = wall_spring[std::size_t(e)];
+        if (rolling_springs) wall_roll[ww] = wall_roll[std::size_t(e)];
+        ++ww;
+      }
+      x_at_build_[row] = x_at_build_[i];
+      ++row;
+      offset[row] = int(w);
+      wall_offset[row] = int(ww);
+    }
+    e_begin = e_end, we_begin = we_end;
+  }
+  offset.resize(n_new + 1), wall_offset.resize(n_new + 1), x_at_build_.resize(n_new);
+  partner.resize(w), spring.resize(w), wall.resize(ww), wall_spring.resize(ww);
+  if (rolling_springs) roll.resize(w), wall_roll.resize(ww);
+  ids_hash_ = ids_hash(p, n_new);
+  return true;
+}
+
 bool VerletList::needs_rebuild(const ParticleStore& p) const {
   if (!built_for(p.size())) return true;
   const std::size_t n = p.size();

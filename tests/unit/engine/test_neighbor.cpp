@@ -132,6 +132,56 @@ TEST(ContactHistory, SurvivesRemovalThatReordersParticles) {
   EXPECT_NEAR(removed.xb.y / alone.xb.y, 1.0, 1e-9);
 }
 
+// Removing particles from a settling bed compacts the neighbour list instead of rebuilding it.
+// A valid list holds every pair in range, in (i, j) order, whichever way it was made, so the
+// forces, and with the Morton reorder off the whole trajectory, are bitwise those of the
+// rebuild; only the number of builds differs.
+TEST(VerletList, CompactionOnRemovalGivesTheTrajectoryOfARebuild) {
+  auto run = [](bool rebuild_on_removal, int threads) {
+    test::Laws l;
+    l.normal_p = {{"stiffness", 1e3}, {"restitution", 0.3}};
+    l.tangential = "linear_history";
+    l.tangential_p = {{"friction", 0.5}};
+    SimulationSettings s;
+    s.dt = 1e-5;
+    s.threads = threads;
+    s.skin = 2e-4;
+    s.reorder_every = 0;
+    Simulation sim(test::model_of(l), s);
+    sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{0, 0, 1}));
+    auto& p = sim.particles();
+    Random rng(5);
+    for (int i = 0; i < 1500; ++i)  // a loose lattice that falls onto the floor and piles up
+      p.add({2.6e-3 * (i % 10) + rng.uniform(0, 2e-4), 2.6e-3 * (i / 10 % 10),
+             1.5e-3 + 2.6e-3 * (i / 100) + rng.uniform(0, 2e-4)},
+            {rng.uniform(-0.05, 0.05), rng.uniform(-0.05, 0.05), 0}, {},
+            rng.uniform(0.8e-3, 1.2e-3), 1e-5, 0);
+    for (int round = 0; round < 8; ++round) {
+      sim.run_steps(400);
+      std::vector<std::size_t> out;
+      for (std::size_t i = 0; i < p.size(); ++i)
+        if ((p.id[i] + std::uint64_t(round)) % 37 == 0) out.push_back(i);
+      if (rebuild_on_removal) sim.request_rebuild();
+      sim.remove_particles(out);
+    }
+    sim.run_steps(400);
+    return std::make_pair(p.x, sim.neighbors().builds);
+  };
+  for (int threads : {1, 2}) {
+    const auto [x_rebuilt, builds_rebuilt] = run(true, threads);
+    const auto [x_compacted, builds_compacted] = run(false, threads);
+    ASSERT_EQ(x_rebuilt.size(), x_compacted.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < x_rebuilt.size(); ++i)
+      differ += (x_rebuilt[i].x != x_compacted[i].x || x_rebuilt[i].y != x_compacted[i].y ||
+                 x_rebuilt[i].z != x_compacted[i].z)
+                    ? 1
+                    : 0;
+    EXPECT_EQ(differ, 0u) << threads << " threads";
+    EXPECT_LT(builds_compacted, builds_rebuilt) << threads << " threads";
+  }
+}
+
 TEST(ContactHistory, EndsWhenTheContactEnds) {
   // b is pressed onto the fixed a and sheared until the tangential spring holds a load; then it
   // is put 0.1 mm clear of a, inside the skin, so the pair stays listed and no rebuild runs. The
@@ -326,6 +376,37 @@ TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
     EXPECT_EQ(right, list.partner.size()) << threads << " threads, after removing";
     EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after removing";
     EXPECT_GT(kept, list.partner.size() / 2);
+    // 2a. The same removal done by compacting the list (Simulation::remove_particles's way):
+    // with nothing moved since the build it is exactly the list a rebuild makes, with every
+    // listed pair's own history, and x_at_build follows the particles.
+    {
+      load_states(list, p);
+      before = listed_ids(list, p);
+      std::vector<std::size_t> out;
+      for (int k = 0; k < 150; ++k) out.push_back(std::size_t(rng.uniform(0, double(p.size()))));
+      out.push_back(0), out.push_back(p.size() - 1);
+      const std::vector<int> to2 = p.remove_all(out);
+      ASSERT_TRUE(list.remove(p, to2));
+      EXPECT_TRUE(list.built_for(p.size()));
+      EXPECT_FALSE(list.needs_rebuild(p));
+      VerletList fresh;
+      fresh.threads = list.threads;
+      fresh.rolling_springs = list.rolling_springs;
+      fresh.build(p, none, 4e-4, 0.05);
+      EXPECT_EQ(list.offset, fresh.offset) << threads << " threads, compacted";
+      EXPECT_EQ(list.partner, fresh.partner) << threads << " threads, compacted";
+      EXPECT_EQ(list.wall_offset, fresh.wall_offset) << threads << " threads, compacted";
+      EXPECT_EQ(list.wall, fresh.wall) << threads << " threads, compacted";
+      std::tie(right, kept) = check_states(list, p, before);
+      EXPECT_EQ(right, list.partner.size()) << threads << " threads, compacted";
+      EXPECT_EQ(kept, list.partner.size());
+      EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, compacted";
+      // A map that is not a removal in order, or for other particles, is refused untouched.
+      std::vector<int> bad(p.size(), 0);
+      EXPECT_FALSE(list.remove(p, bad));
+      EXPECT_FALSE(list.remove(p, std::vector<int>(p.size() + 3, 0)));
+      EXPECT_EQ(list.partner, fresh.partner);
+    }
     // 2b. Two removals before one rebuild: the second stash call keeps the first stash, and the
     // two maps compose.
     load_states(list, p);
