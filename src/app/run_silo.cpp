@@ -98,6 +98,21 @@ void write_outlet_csv(const fs::path& path, const Case& c, const std::vector<Out
   w.finish();
 }
 
+// One row per lost particle: where and how it was found, and where its centre crossed z = 0.
+void write_lost_csv(const fs::path& path, const Case& c, const std::vector<LostRecord>& lost) {
+  CsvWriter w(path.string(),
+              {"time_s", "id", "coal", "x_m", "y_m", "z_m", "vx_m_s", "vy_m_s", "vz_m_s",
+               "radius_m", "mass_kg", "reason", "nearest_wall", "wall_distance_m", "crossing_r_m"});
+  auto num = [](double x) { return std::isnan(x) ? std::string() : fmt::format("{}", x); };
+  for (const auto& l : lost)
+    w.row(std::vector<std::string>{
+        num(l.t), fmt::format("{}", l.id), c.coals[std::size_t(l.coal)].name, num(l.x.x),
+        num(l.x.y), num(l.x.z), num(l.v.x), num(l.v.y), num(l.v.z), num(l.radius), num(l.mass),
+        lost_reason_name(l.reason), surface_name(l.nearest.surface), num(l.nearest.distance),
+        num(l.crossing_r)});
+  w.finish();
+}
+
 // The measured outlet data, copied into the run directory, and its errors against the bins.
 toml::table measured_summary(const Case& c, const fs::path& out,
                              const std::vector<OutletBin>& bins) {
@@ -273,6 +288,7 @@ class SiloRun {
     for (const auto& coal : c_.coals) q.push_back(coal.heating_value);
     const std::vector<OutletBin> bins = outlet_bins(d.outflow, c_.discharge.bin, d.end_time, q);
     write_outlet_csv(out_ / "outlet.csv", c_, bins);
+    write_lost_csv(out_ / "lost.csv", c_, d.lost);
     observers_->finish();
     {  // The final state, bit for bit (particles, contact history): for comparisons and tests.
       ByteWriter w;
@@ -356,6 +372,7 @@ class SiloRun {
         {"remaining_mass_kg", d.remaining_mass},
         {"lost_mass_kg", d.lost_mass},
         {"particles_lost", d.particles_lost},
+        {"particles_round_rim", d.particles_round_rim},
         {"mass_ledger_error_kg", ledger_error},
         {"discharge_time_s", d.discharge_time},
         // Mean rate up to the last particle out (a stall after it does not count).

@@ -80,6 +80,15 @@ class ByteReader {
         std::uint32_t(name[0] | name[1] << 8 | name[2] << 16 | name[3] << 24);
     if (get<std::uint32_t>() != want) fail(std::string("section ") + name);
   }
+  // True if the next bytes are this tag (nothing is read): for an optional section.
+  bool next_is(const char (&name)[5]) const {
+    const std::uint32_t want =
+        std::uint32_t(name[0] | name[1] << 8 | name[2] << 16 | name[3] << 24);
+    std::uint32_t have = 0;
+    if (bytes_.size() - at_ < sizeof have) return false;
+    std::memcpy(&have, bytes_.data() + at_, sizeof have);
+    return have == want;
+  }
   bool done() const { return at_ == bytes_.size(); }
 
  private:

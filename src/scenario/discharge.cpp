@@ -4,9 +4,22 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace silodem {
+
+const char* lost_reason_name(LostReason r) {
+  switch (r) {
+    case LostReason::OutsideWall:
+      return "outside_wall";
+    case LostReason::AboveSilo:
+      return "above_silo";
+    case LostReason::BelowOutsideOutlet:
+      return "below_outside_outlet";
+  }
+  return "?";
+}
 
 double total_mass(const ParticleStore& p) {
   double m = 0.0;
@@ -32,38 +45,75 @@ void Discharge::open() {
   steps0_ = sim_.step_count();
 }
 
+void Discharge::note_crossings() {
+  // A centre moves microns per step, far less than its radius, so each one going below z = 0 is
+  // seen in the band of one radius under the plane (one that is not, e.g. below z = 0 when the
+  // valve opened, is classified where the next check finds it).
+  const auto& p = sim_.particles();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const double z = p.x[i].z;
+    if (z >= 0.0 || z < -p.radius[i]) continue;
+    if (!crossed_.count(p.id[i])) entered_.emplace(p.id[i], std::hypot(p.x[i].x, p.x[i].y));
+  }
+}
+
+void Discharge::add_lost(double t, std::size_t i, LostReason why, double crossing_r) {
+  const auto& p = sim_.particles();
+  const bool valve_closed = sim_.walls()[valve_]->enabled;
+  r_.lost.push_back({t, p.id[i], p.material[i], p.x[i], p.v[i], p.radius[i], p.mass[i], why,
+                     g_.nearest_surface(p.x[i], valve_closed), crossing_r});
+  r_.lost_mass += p.mass[i];
+  ++r_.particles_lost;
+}
+
 void Discharge::check(double t, std::vector<std::size_t>& remove) {
   auto& p = sim_.particles();
   remove.clear();
+  auto discharged = [&](std::size_t i, double t_out) {
+    r_.outflow.push_back({t_out, p.material[i], p.mass[i]});
+    r_.discharged_mass += p.mass[i];
+    bin_mass_ += p.mass[i];
+    last_out_ = t;
+    remove.push_back(i);
+  };
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double z = p.x[i].z;
     const double r_xy = std::hypot(p.x[i].x, p.x[i].y);
-    if (z < 0.0 && !crossed_.count(p.id[i])) {
-      // Left through the outlet, or past the rim outside it (escaped: lost).
-      crossed_[p.id[i]] = r_xy <= g_.outlet_radius() + p.radius[i] ? t : -1.0;
+    auto c = crossed_.find(p.id[i]);
+    if (z < 0.0 && c == crossed_.end()) {
+      // Left through the outlet, or past the rim outside it (escaped: lost): where its centre
+      // crossed z = 0 decides. Not seen crossing: where it is now, its radius the margin.
+      const auto e = entered_.find(p.id[i]);
+      const bool seen = e != entered_.end();
+      const double r_cross = seen ? e->second : r_xy;
+      const bool inside = r_cross <= g_.outlet_radius() + (seen ? 0.0 : p.radius[i]);
+      c = crossed_.emplace(p.id[i], Crossing{inside ? t : -1.0, r_cross}).first;
+      if (seen) entered_.erase(e);
     }
-    bool lost = (z >= 0.0 && r_xy > g_.radius_at(z) + p.radius[i]) || z > g_.total_height() + 0.5;
-    if (z < -spec_.sink_depth) {
-      const auto it = crossed_.find(p.id[i]);
-      const double t_out = it != crossed_.end() ? it->second : t;
-      if (t_out < 0.0) {
-        lost = true;
+    const double r_cross =
+        c != crossed_.end() ? c->second.r : std::numeric_limits<double>::quiet_NaN();
+    if (z > g_.total_height() + 0.5) {
+      add_lost(t, i, LostReason::AboveSilo, r_cross);
+      remove.push_back(i);
+    } else if (z >= 0.0 && r_xy > g_.radius_at(z) + p.radius[i]) {
+      if (c != crossed_.end() && c->second.t >= 0.0) {
+        // Out through the outlet and back up outside the cone, round the rim: discharged.
+        discharged(i, c->second.t);
+        ++r_.particles_round_rim;
       } else {
-        r_.outflow.push_back({t_out, p.material[i], p.mass[i]});
-        r_.discharged_mass += p.mass[i];
-        bin_mass_ += p.mass[i];
-        last_out_ = t;
+        add_lost(t, i, LostReason::OutsideWall, r_cross);
         remove.push_back(i);
-        continue;
+      }
+    } else if (z < -spec_.sink_depth) {
+      if (c->second.t < 0.0) {
+        add_lost(t, i, LostReason::BelowOutsideOutlet, r_cross);
+        remove.push_back(i);
+      } else {
+        discharged(i, c->second.t);
       }
     }
-    if (lost) {
-      r_.lost_mass += p.mass[i];
-      ++r_.particles_lost;
-      remove.push_back(i);
-    }
   }
-  for (std::size_t i : remove) crossed_.erase(p.id[i]);
+  for (std::size_t i : remove) crossed_.erase(p.id[i]), entered_.erase(p.id[i]);
   sim_.remove_particles(remove);
 }
 
@@ -78,6 +128,7 @@ DischargeResult Discharge::run(const DischargeProgress& progress, const Discharg
     for (;;) {
       while (step_in_interval_ < check_every_) {
         sim_.step();
+        note_crossings();
         ++step_in_interval_;
         if (control.stop && control.stop()) {
           DischargeResult out = finish(r_);
@@ -146,8 +197,9 @@ void Discharge::save(ByteWriter& w) const {
   w.put(t0_), w.put(steps0_), w.put(step_in_interval_), w.put(next_checkpoint_);
   w.put(last_out_), w.put(bin_mass_), w.put(bin_start_), w.put(recent_rate_);
   std::vector<std::uint64_t> ids;
-  std::vector<double> times;
-  for (const auto& [id, t] : crossed_) ids.push_back(id), times.push_back(t);
+  std::vector<double> times, radii;
+  for (const auto& [id, c] : crossed_)
+    ids.push_back(id), times.push_back(c.t), radii.push_back(c.r);
   w.put(ids), w.put(times);
   std::vector<double> out_t, out_m;
   std::vector<int> out_c;
@@ -156,6 +208,28 @@ void Discharge::save(ByteWriter& w) const {
   w.put(out_t), w.put(out_c), w.put(out_m);
   w.put(r_.filled_mass), w.put(r_.discharged_mass), w.put(r_.lost_mass);
   w.put(r_.particles_filled), w.put(r_.particles_lost);
+  // Since lost.csv: where each crossed, the crossings not yet checked, the lost records. A
+  // section of its own, so that a checkpoint written before it still loads.
+  w.tag("LOST");
+  w.put(radii);
+  std::vector<std::uint64_t> e_ids;
+  std::vector<double> e_r;
+  for (const auto& [id, r] : entered_) e_ids.push_back(id), e_r.push_back(r);
+  w.put(e_ids), w.put(e_r);
+  w.put(r_.particles_round_rim);
+  std::vector<double> t, radius, mass, distance, crossing_r;
+  std::vector<std::uint64_t> id;
+  std::vector<int> coal;
+  std::vector<Vec3> x, v;
+  std::vector<std::uint8_t> reason, surface;
+  for (const auto& l : r_.lost) {
+    t.push_back(l.t), id.push_back(l.id), coal.push_back(l.coal), x.push_back(l.x);
+    v.push_back(l.v), radius.push_back(l.radius), mass.push_back(l.mass);
+    reason.push_back(std::uint8_t(l.reason)), surface.push_back(std::uint8_t(l.nearest.surface));
+    distance.push_back(l.nearest.distance), crossing_r.push_back(l.crossing_r);
+  }
+  w.put(t), w.put(id), w.put(coal), w.put(x), w.put(v), w.put(radius), w.put(mass);
+  w.put(reason), w.put(surface), w.put(distance), w.put(crossing_r);
 }
 
 void Discharge::load(ByteReader& rd) {
@@ -166,8 +240,6 @@ void Discharge::load(ByteReader& rd) {
   std::vector<double> times;
   rd.get(ids), rd.get(times);
   if (ids.size() != times.size()) throw std::runtime_error("checkpoint: discharge records differ");
-  crossed_.clear();
-  for (std::size_t k = 0; k < ids.size(); ++k) crossed_[ids[k]] = times[k];
   std::vector<double> out_t, out_m;
   std::vector<int> out_c;
   rd.get(out_t), rd.get(out_c), rd.get(out_m);
@@ -178,6 +250,42 @@ void Discharge::load(ByteReader& rd) {
     r_.outflow.push_back({out_t[k], out_c[k], out_m[k]});
   rd.get(r_.filled_mass), rd.get(r_.discharged_mass), rd.get(r_.lost_mass);
   rd.get(r_.particles_filled), rd.get(r_.particles_lost);
+  std::vector<double> radii(ids.size(), std::numeric_limits<double>::quiet_NaN());
+  entered_.clear();
+  r_.lost.clear();
+  r_.particles_round_rim = 0;
+  if (rd.next_is("LOST")) {  // (a checkpoint from before lost.csv has none of this)
+    rd.tag("LOST");
+    rd.get(radii);
+    if (radii.size() != ids.size()) throw std::runtime_error("checkpoint: crossings differ");
+    std::vector<std::uint64_t> e_ids;
+    std::vector<double> e_r;
+    rd.get(e_ids), rd.get(e_r);
+    if (e_r.size() != e_ids.size()) throw std::runtime_error("checkpoint: crossings differ");
+    for (std::size_t k = 0; k < e_ids.size(); ++k) entered_[e_ids[k]] = e_r[k];
+    rd.get(r_.particles_round_rim);
+    std::vector<double> t, radius, mass, distance, crossing_r;
+    std::vector<std::uint64_t> id;
+    std::vector<int> coal;
+    std::vector<Vec3> x, v;
+    std::vector<std::uint8_t> reason, surface;
+    rd.get(t), rd.get(id), rd.get(coal), rd.get(x), rd.get(v), rd.get(radius), rd.get(mass);
+    rd.get(reason), rd.get(surface), rd.get(distance), rd.get(crossing_r);
+    const std::size_t n = t.size();
+    for (std::size_t size : {id.size(), coal.size(), x.size(), v.size(), radius.size(), mass.size(),
+                             reason.size(), surface.size(), distance.size(), crossing_r.size()})
+      if (size != n) throw std::runtime_error("checkpoint: lost records differ");
+    for (std::size_t k = 0; k < n; ++k) {
+      if (reason[k] > std::uint8_t(LostReason::BelowOutsideOutlet) ||
+          surface[k] > std::uint8_t(SiloSurface::Valve))
+        throw std::runtime_error("checkpoint: lost records damaged");
+      const SurfaceDistance nearest{SiloSurface(surface[k]), distance[k]};
+      r_.lost.push_back({t[k], id[k], coal[k], x[k], v[k], radius[k], mass[k],
+                         LostReason(reason[k]), nearest, crossing_r[k]});
+    }
+  }
+  crossed_.clear();
+  for (std::size_t k = 0; k < ids.size(); ++k) crossed_[ids[k]] = {times[k], radii[k]};
 }
 
 DischargeResult discharge(Simulation& sim, const SiloGeometry& g, std::size_t valve_index,

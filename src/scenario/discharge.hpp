@@ -1,12 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Discharge: the valve opens at t = 0; a particle leaves when its centre crosses the outlet plane
-// inside the outlet (that time is recorded, with its coal and mass) and is removed when it has
-// fallen `sink_depth` below it. Particles found outside the walls, or crossing the outlet plane
-// outside the outlet, are removed and counted as lost. Ends when the target fraction has left or
-// the silo is empty, when nothing has left for `stall_time` (a stopped flow: arching, reported as
-// such; the clock starts once a particle could have reached the sink), at `max_time`, or on a
-// simulation error (the results up to then are kept), or when the caller asks it to stop (a
-// signal; the state is then checkpointed and the run can be resumed).
+// inside the outlet (the time of the first check after that is recorded, with its coal and mass)
+// and is removed when it has fallen `sink_depth` below it. Where a centre crosses z = 0 is
+// noted at the step it happens, so a particle that moves sideways before the next check is still
+// classified by where it went through. Particles found outside the walls, or that crossed the
+// outlet plane outside the outlet, are removed and counted as lost, each with a record (lost.csv).
+// A particle that left through the outlet and then came back up outside the cone, round the rim
+// (a cohesive particle can swing round the rim edge), has left the silo: it is removed there and
+// counted as discharged. Ends when the target fraction has left or the silo is empty, when
+// nothing has left for `stall_time` (a stopped flow: arching, reported as such; the clock starts
+// once a particle could have reached the sink), at `max_time`, or on a simulation error (the
+// results up to then are kept), or when the caller asks it to stop (a signal; the state is then
+// checkpointed and the run can be resumed).
 #pragma once
 #include <functional>
 #include <map>
@@ -16,6 +21,7 @@
 #include "core/bytes.hpp"
 #include "engine/simulation.hpp"
 #include "scenario/case.hpp"
+#include "scenario/silo_geometry.hpp"
 
 namespace silodem {
 
@@ -23,6 +29,25 @@ struct OutletRecord {
   double t = 0.0;  // s since the valve opened
   int coal = 0;
   double mass = 0.0;  // kg
+};
+
+// Why a particle was counted lost.
+enum class LostReason : std::uint8_t {
+  OutsideWall,         // above z = 0, radially outside the wall by more than its radius
+  AboveSilo,           // more than 0.5 m above the silo top
+  BelowOutsideOutlet,  // reached the sink after its centre crossed z = 0 outside the outlet
+};
+const char* lost_reason_name(LostReason r);  // "outside_wall", "above_silo", ...
+
+struct LostRecord {
+  double t = 0.0;  // s since the valve opened (the check that found it)
+  std::uint64_t id = 0;
+  int coal = 0;
+  Vec3 x, v;  // m, m/s when found
+  double radius = 0.0, mass = 0.0;
+  LostReason reason = LostReason::OutsideWall;
+  SurfaceDistance nearest;  // the silo surface nearest to x, and on which side of it x is
+  double crossing_r = 0.0;  // m from the axis where its centre crossed z = 0 (NaN: never)
 };
 
 struct DischargeState {
@@ -38,6 +63,9 @@ struct DischargeResult {
   std::vector<OutletRecord> outflow;  // sorted by time
   double filled_mass = 0.0, discharged_mass = 0.0, lost_mass = 0.0, remaining_mass = 0.0;
   long particles_filled = 0, particles_lost = 0;
+  std::vector<LostRecord> lost;  // one per lost particle, in the order found
+  // Discharged particles that came back up outside the cone round the outlet rim (removed there).
+  long particles_round_rim = 0;
   double discharge_time = 0.0;  // s from the valve opening to the last particle out
   double end_time = 0.0;        // s simulated after the valve opened
   DischargeEnd end = DischargeEnd::TimeLimit;
@@ -73,8 +101,14 @@ class Discharge {
   void load(ByteReader& r);
 
  private:
+  struct Crossing {
+    double t = 0.0;  // s: the first check that saw it below z = 0; -1: it crossed outside
+    double r = 0.0;  // m from the axis where it crossed (NaN: not known, an old checkpoint)
+  };
   DischargeResult finish(DischargeResult r) const;
+  void note_crossings();  // after every step: where centres first go below z = 0
   void check(double t, std::vector<std::size_t>& remove);
+  void add_lost(double t, std::size_t i, LostReason why, double crossing_r);
 
   Simulation& sim_;
   SiloGeometry g_;
@@ -88,8 +122,9 @@ class Discharge {
   long step_in_interval_ = 0;
   double next_checkpoint_ = 0.0;
   double last_out_ = 0.0, bin_mass_ = 0.0, bin_start_ = 0.0, recent_rate_ = 0.0;
-  std::map<std::uint64_t, double> crossed_;  // id -> time its centre crossed z = 0 (-1: outside)
-  DischargeResult r_;                        // records and masses so far
+  std::map<std::uint64_t, Crossing> crossed_;  // id -> its crossing of z = 0, once checked
+  std::map<std::uint64_t, double> entered_;    // id -> r where it first went below, until checked
+  DischargeResult r_;                          // records and masses so far
 };
 
 // Opens the valve and runs to the end (no checkpoints).

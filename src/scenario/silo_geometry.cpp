@@ -31,6 +31,50 @@ double SiloGeometry::volume(double z0, double z1) const {
   return piece(std::max(z0, 0.0), std::min(z1, joint)) + piece(std::max(z0, joint), z1);
 }
 
+const char* surface_name(SiloSurface s) {
+  switch (s) {
+    case SiloSurface::Cone:
+      return "cone";
+    case SiloSurface::Cylinder:
+      return "cylinder";
+    case SiloSurface::OutletPlane:
+      return "outlet_plane";
+    case SiloSurface::Valve:
+      return "valve";
+  }
+  return "?";
+}
+
+namespace {
+
+// Signed distance from (r, z) to the meridian segment a -> b whose inside (the axis side for an
+// upward segment) is on the left of a -> b: the distance to the segment's nearest point, with
+// the sign of the side of its line.
+double segment_distance(double r, double z, double ar, double az, double br, double bz) {
+  const double ur = br - ar, uz = bz - az, len2 = ur * ur + uz * uz;
+  const double s = std::clamp(((r - ar) * ur + (z - az) * uz) / len2, 0.0, 1.0);
+  const double d = std::hypot(r - (ar + s * ur), z - (az + s * uz));
+  const double side = (r - ar) * -uz + (z - az) * ur;  // > 0: inside
+  return side < 0.0 ? -d : d;
+}
+
+}  // namespace
+
+SurfaceDistance SiloGeometry::nearest_surface(const Vec3& x, bool valve_closed) const {
+  const double r = std::hypot(x.x, x.y), R0 = outlet_radius(), R1 = top_radius();
+  SurfaceDistance best{SiloSurface::Cone, segment_distance(r, x.z, R0, 0.0, R1, cone_height)};
+  auto consider = [&](SiloSurface s, double d) {
+    if (std::fabs(d) < std::fabs(best.distance)) best = {s, d};
+  };
+  if (cylinder_height > 0.0)
+    consider(SiloSurface::Cylinder, segment_distance(r, x.z, R1, cone_height, R1, total_height()));
+  // The opening: above it is inside the silo, below it is out.
+  const double to_disk = r <= R0 ? std::fabs(x.z) : std::hypot(r - R0, x.z);
+  consider(SiloSurface::OutletPlane, x.z < 0.0 ? -to_disk : to_disk);
+  if (valve_closed) consider(SiloSurface::Valve, x.z + valve_gap);
+  return best;
+}
+
 SiloWalls make_silo_walls(const SiloGeometry& g) {
   SiloWalls s;
   const Meridian rim{g.outlet_radius(), 0.0}, joint{g.top_radius(), g.cone_height},

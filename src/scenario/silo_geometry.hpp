@@ -6,9 +6,21 @@
 #include <memory>
 #include <vector>
 
+#include "core/vec3.hpp"
 #include "engine/walls/wall.hpp"
 
 namespace silodem {
+
+// The silo's surfaces, by name (lost.csv says which one a lost particle was nearest to).
+enum class SiloSurface { Cone, Cylinder, OutletPlane, Valve };
+const char* surface_name(SiloSurface s);  // "cone", "cylinder", "outlet_plane", "valve"
+
+struct SurfaceDistance {
+  SiloSurface surface = SiloSurface::Cone;
+  // From the centre to the nearest point of the surface (m): positive on the silo's side (inside
+  // the cone or cylinder, above the outlet plane or the valve), negative behind it.
+  double distance = 0.0;
+};
 
 struct SiloGeometry {
   double outlet_diameter = 0.050;    // m
@@ -24,6 +36,10 @@ struct SiloGeometry {
   double radius_at(double z) const;  // wall radius at height z (outlet radius below z = 0)
   // Volume inside the walls between heights z0 < z1 (>= 0).
   double volume(double z0, double z1) const;
+  // The surface nearest to the point x, of: the cone and cylinder faces (finite segments in the
+  // meridian plane), the outlet opening (the disk z = 0, r <= outlet radius) and, if
+  // `valve_closed`, the valve plate (the plane z = -valve_gap). Ties go to that order.
+  SurfaceDistance nearest_surface(const Vec3& x, bool valve_closed) const;
 };
 
 struct SiloWalls {

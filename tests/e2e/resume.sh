@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end (issue 5): a run killed with SIGKILL in the middle of its discharge and resumed gives
-# outlet.csv, fill.csv, the probe CSVs and the final state bit for bit equal to an uninterrupted
-# run, also when the checkpoints come by wall-clock time; SIGINT stops a run within a second with
-# a checkpoint and a message, and it resumes; a changed case file is refused on resume unless
-# --force.
+# outlet.csv, fill.csv, lost.csv, the probe CSVs and the final state bit for bit equal to an
+# uninterrupted run, also when the checkpoints come by wall-clock time; SIGINT stops a run within
+# a second with a checkpoint and a message, and it resumes; a changed case file is refused on
+# resume unless --force.
 set -u
 bin=$1
 src=$2
@@ -50,7 +50,7 @@ kill_and_resume b "${args[@]}"
 t_resumed=$(sed -n 's/.*resumed at t = \([0-9.]*\) s.*/\1/p' "$work/b2.log")
 awk -v t="${t_resumed:-0}" 'BEGIN { exit !(t > 0) }' ||
   bad "b resumed at t = 0 (no periodic checkpoint?): $(grep resumed "$work/b2.log")"
-for f in outlet.csv fill.csv final_state.bin probe_slab.csv probe_velocity_profile.csv \
+for f in outlet.csv fill.csv lost.csv final_state.bin probe_slab.csv probe_velocity_profile.csv \
          probe_adhesion.csv probe_cohesion_force.csv probe_level.csv probe_coordination.csv; do
   cmp -s "$work/a/$f" "$work/b/$f" || bad "killed + resumed run: $f differs from the uninterrupted run"
 done
@@ -67,7 +67,7 @@ kill_and_resume e "${args[@]}" --set simulation.checkpoint_interval=0 \
 t_resumed=$(sed -n 's/.*resumed at t = \([0-9.]*\) s.*/\1/p' "$work/e2.log")
 awk -v t="${t_resumed:-0}" 'BEGIN { exit !(t > 0) }' ||
   bad "e resumed at t = 0: no checkpoint by wall time: $(grep resumed "$work/e2.log")"
-for f in outlet.csv final_state.bin probe_slab.csv; do
+for f in outlet.csv lost.csv final_state.bin probe_slab.csv; do
   cmp -s "$work/a/$f" "$work/e/$f" || bad "checkpoints by wall time: $f differs from the uninterrupted run"
 done
 
@@ -112,7 +112,7 @@ grep -q "resumed at" "$work/d.log" || bad "--force did not resume: $(cat "$work/
 kill -9 $pid
 wait $pid 2>/dev/null
 "$bin" run --resume "$work/c" > "$work/c2.log" 2>&1 || bad "resume of c exited $?"
-for f in outlet.csv final_state.bin probe_slab.csv probe_velocity_profile.csv; do
+for f in outlet.csv lost.csv final_state.bin probe_slab.csv probe_velocity_profile.csv; do
   cmp -s "$work/a/$f" "$work/c/$f" || bad "interrupted + resumed run: $f differs"
 done
 # What bench --from started from is what the resume started from.

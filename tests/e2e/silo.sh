@@ -14,7 +14,7 @@ case=$src/tests/data/small_silo.toml
 printf 't_s,rate_kg_s,calorific_kcal_kg\n0.05,0.5,\n0.15,,3500\n' > "$work/measured.csv"
 "$bin" run "$case" --out "$work/run" --set output.vtk_interval=0.05 --set probes.every=100 \
   --set "output.measured=\"$work/measured.csv\"" > "$work/out.txt" 2> "$work/err.txt" || bad "run exited $?: $(tail -3 "$work/err.txt")"
-for f in outlet.csv fill.csv summary.json case.toml check.json report.html measured.csv \
+for f in outlet.csv fill.csv lost.csv summary.json case.toml check.json report.html measured.csv \
          particles.pvd silo.vtp vtk/particles_000000.vtp; do
   [ -f "$work/run/$f" ] || bad "missing $f"
 done
@@ -40,6 +40,13 @@ assert s["complete"] is True and s["flow_stopped"] is False, s
 ledger = s["filled_mass_kg"] - (s["remaining_mass_kg"] + s["discharged_mass_kg"] + s["lost_mass_kg"])
 assert abs(ledger) < 1e-12, ledger
 assert s["discharged_mass_kg"] >= 0.995 * s["filled_mass_kg"], s
+# lost.csv: one row per lost particle, their masses the ledger's lost mass.
+lost = list(csv.DictReader(open(os.path.join(d, "lost.csv"))))
+assert len(lost) == s["particles_lost"], (len(lost), s["particles_lost"])
+assert abs(sum(float(r["mass_kg"]) for r in lost) - s["lost_mass_kg"]) < 1e-12, lost
+reasons = ("outside_wall", "above_silo", "below_outside_outlet")
+assert all(r["reason"] in reasons for r in lost), lost
+assert isinstance(s["particles_round_rim"], int), s
 rows = list(csv.DictReader(open(os.path.join(d, "outlet.csv"))))
 need = ["t_start_s", "t_end_s", "mass_kg", "rate_kg_s", "cumulative_kg", "fraction_Longwanggou",
         "fraction_Indonesian", "calorific_kcal_kg"]
