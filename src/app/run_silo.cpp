@@ -342,6 +342,14 @@ class SiloRun {
     const DischargeResult& d = dis_result_;
     std::vector<double> q, out_per_coal(c_.coals.size(), 0.0);
     for (const auto& coal : c_.coals) q.push_back(coal.heating_value);
+    // Eq. 17 over the planned masses (measured bulk density x segment volume); a coal without a
+    // measured bulk density (a dry case filled by volume) has no plan: the filled masses then.
+    double inventory_calorific = report_.inventory_calorific;
+    if (!std::isfinite(inventory_calorific)) {
+      std::vector<double> filled(c_.coals.size(), 0.0);
+      for (const auto& seg : fill_.segments) filled[std::size_t(seg.coal)] += seg.mass;
+      inventory_calorific = mixture_calorific(filled, q);
+    }
     for (const auto& r : d.outflow) out_per_coal[std::size_t(r.coal)] += r.mass;
     const double ledger_error =
         std::fabs(d.filled_mass - (d.remaining_mass + d.discharged_mass + d.lost_mass));
@@ -383,7 +391,7 @@ class SiloRun {
         {"fill_settle_time_s", fill_.settle_time},
         {"fill_max_boundary_offset_m", fill_.max_boundary_offset},
         {"outlet_mean_calorific_kcal_kg", mixture_calorific(out_per_coal, q)},
-        {"inventory_calorific_kcal_kg", report_.inventory_calorific},
+        {"inventory_calorific_kcal_kg", inventory_calorific},
         {"k", report_.k},
         {"time_step_s", sim_->dt()},
         {"discharge_steps", d.steps},

@@ -90,14 +90,22 @@ std::string case_report_text(const Case& c, const CaseReport& r) {
         c.silo.geometry.cylinder_diameter * 1e3,
         c.silo.geometry.half_angle() * 180.0 / 3.14159265358979323846, c.fill.scenario);
     double total = 0.0;
+    bool known = true;  // every segment's coal has a measured bulk density
     for (const auto& sp : r.fill_plan) {
-      s += fmt::format(
-          "  H{}  {:<12} z {:.4f}-{:.4f} m  {:.4f} m^3  {:.3f} kg at the measured bulk density\n",
-          sp.index, c.coals[std::size_t(sp.coal)].name, sp.z_low, sp.z_high, sp.volume, sp.mass);
+      const bool has = c.coals[std::size_t(sp.coal)].bulk_density > 0.0;
+      known = known && has;
+      s += fmt::format("  H{}  {:<12} z {:.4f}-{:.4f} m  {:.4f} m^3  {}\n", sp.index,
+                       c.coals[std::size_t(sp.coal)].name, sp.z_low, sp.z_high, sp.volume,
+                       has ? fmt::format("{:.3f} kg at the measured bulk density", sp.mass)
+                           : std::string("(no measured bulk density: mass known after the fill)"));
       total += sp.mass;
     }
-    s += fmt::format("  fill {:.3f} kg; inventory calorific value (Eq. 17) {:.1f} kcal/kg\n", total,
-                     r.inventory_calorific);
+    if (known)
+      s += fmt::format("  fill {:.3f} kg; inventory calorific value (Eq. 17) {:.1f} kcal/kg\n",
+                       total, r.inventory_calorific);
+    else
+      s += "  fill mass and inventory calorific value known after the fill (fill.csv, "
+           "summary.json)\n";
   }
   for (const auto& w : r.warnings) s += "warning: " + w + "\n";
   return s;

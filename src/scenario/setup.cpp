@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/constants.hpp"
 #include "engine/neighbor/cell_grid.hpp"
@@ -121,7 +122,13 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
       r.fill_plan.push_back(sp);
       r.segment_coal.push_back(sp.coal);
     }
-    r.inventory_calorific = mixture_calorific(mass_per_coal, q);
+    // Unknown (NaN) if a coal in the silo has no measured bulk density (a dry case filled by
+    // volume): the run then takes it from the filled masses.
+    bool planned = true;
+    for (int coal : r.segment_coal)
+      planned = planned && c.coals[std::size_t(coal)].bulk_density > 0;
+    r.inventory_calorific =
+        planned ? mixture_calorific(mass_per_coal, q) : std::numeric_limits<double>::quiet_NaN();
     for (std::size_t a = 0; a < c.coals.size(); ++a) {
       const double ratio = g.outlet_diameter / SizeSampler(c.coals[a], c.cg).max_diameter();
       if (ratio < 6.0)

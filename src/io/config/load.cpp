@@ -346,6 +346,7 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     c.cg.restitution_floor = v.number("restitution_floor");
   }
   // [[coal]]
+  std::vector<std::string> missing_measured;  // per coal: the first Eq. 14-16 input not given
   const auto coal_tables = r.tables(root, "coal");
   if (coal_tables.empty())
     throw InputError({file, 1, 1}, "coal", "missing: at least one [[coal]] table is required");
@@ -362,14 +363,14 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     p.true_density = v.number("true_density_kg_m3");
     p.heating_value = v.number("heating_value_kcal_kg");
     if (v.was_given("cohesion_force_n")) p.cohesion_force_override = v.number("cohesion_force_n");
-    const bool measured_needed = !p.cohesion_force_override;
+    // The measured inputs of Eq. 14-16 are needed only if a cohesion law uses the force: checked
+    // after [contact.*] (a dry coal needs none of them).
+    std::string missing;
     for (const char* key :
-         {"bulk_density_kg_m3", "cohesion_kpa", "friction_angle_deg", "moisture_percent"}) {
-      if (measured_needed && !v.was_given(key))
-        throw v.error(
-            key,
-            "missing: needed to derive the cohesive force (Eq. 14-16), or give cohesion_force_n");
-    }
+         {"bulk_density_kg_m3", "cohesion_kpa", "friction_angle_deg", "moisture_percent"})
+      if (missing.empty() && !v.was_given(key)) missing = key;
+    const bool measured_needed = !p.cohesion_force_override && missing.empty();
+    missing_measured.push_back(p.cohesion_force_override ? std::string() : missing);
     if (v.was_given("bulk_density_kg_m3")) {
       p.bulk_density = v.number("bulk_density_kg_m3");
       if (p.bulk_density > p.true_density)
@@ -422,6 +423,18 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
   // [contact.*]
   c.particle_particle = r.contact(root, "particle_particle", false);
   c.particle_wall = r.contact(root, "particle_wall", true);
+  for (const ContactSpec* spec : {&c.particle_particle, &c.particle_wall}) {
+    if (spec->cohesion.law == "none") continue;
+    for (std::size_t k = 0; k < c.coals.size(); ++k)
+      if (!missing_measured[k].empty())
+        throw InputError(
+            c.coal_places[k], fmt::format("coal[{}].{}", k, missing_measured[k]),
+            fmt::format("missing: the cohesion law \"{}\" of [contact.{}] needs it to derive the "
+                        "cohesive force (Eq. 14-16); give it, or cohesion_force_n, or use "
+                        "cohesion = {{ law = \"none\" }} in both contact sections",
+                        spec->cohesion.law,
+                        spec == &c.particle_particle ? "particle_particle" : "particle_wall"));
+  }
   if (const toml::node* cn = root.get("contact")) {
     for (const auto& [k, node] : *cn->as_table()) {
       const std::string key(k.str());
