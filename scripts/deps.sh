@@ -11,7 +11,8 @@
 #   python3                 end-to-end test scripts (stdlib only)
 #   python3-matplotlib      figures and report.html of a run (tools/*.py; Debian's /usr/bin/python3)
 #   python3-vtk9            tests read the ParaView files back with the real VTK library
-#   clang-14 libclang-rt-14-dev libomp-14-dev   the libFuzzer target over the case loader (CI)
+#   clang-14 libclang-rt-14-dev libomp-14-dev   the libFuzzer target over the case loader, and the
+#                           ThreadSanitizer job (LLVM's OpenMP with its Archer tool) (CI)
 set -euo pipefail
 pkgs=(g++ cmake make libtomlplusplus-dev libcli11-dev libfmt-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev
       clang-format python3 python3-matplotlib python3-vtk9 clang-14 libclang-rt-14-dev
