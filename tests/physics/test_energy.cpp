@@ -57,5 +57,33 @@ TEST(Energy, TP9_DriftAndSecondOrder) {
   EXPECT_LT(ratio, 5.0) << coarse << " " << fine;
 }
 
+// The force pass, the contact tally and the energy visit a particle's wall contacts through one
+// loop with one rule (engine/contact_visit.hpp): a wall switched off takes part in none of them,
+// even before the list is rebuilt. A sphere pressed 0.1 mm into a plane stores 1/2 k_n delta^2
+// of elastic energy (exact for the linear spring) until the plane is switched off.
+TEST(Energy, ASwitchedOffWallStoresNoEnergyAndMakesNoContact) {
+  test::Laws l;
+  l.normal_p = {{"stiffness", 1e3}, {"restitution", 1.0}};
+  const double r = 2e-3, m = test::sphere_mass_of(2 * r, 1500), delta = 1e-4;
+  ContactModel model = test::model_of(l);
+  SimulationSettings s;
+  s.dt = model.wall_collision_time(0, m) / 50;
+  s.gravity = {};
+  s.threads = 1;
+  s.skin = 0.5 * r;
+  Simulation sim(std::move(model), s);
+  sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{0, 0, 1}));
+  sim.particles().add({0, 0, r - delta}, {}, {}, r, m, 0);
+  sim.initialize();
+  EXPECT_NEAR(sim.energy().elastic, 0.5 * 1e3 * delta * delta, 1e-12 * 1e3 * delta * delta);
+  EXPECT_EQ(sim.contact_tally().wall_contacts[0], 1);
+  sim.set_wall_enabled(0, false);  // the list still holds the contact until the next step
+  ASSERT_EQ(sim.neighbors().wall.size(), 1u);
+  EXPECT_EQ(sim.energy().elastic, 0.0);
+  EXPECT_EQ(sim.contact_tally().wall_contacts[0], 0);
+  sim.step();
+  EXPECT_EQ(sim.particles().f[0].z, 0.0);  // no force from the switched-off wall
+}
+
 }  // namespace
 }  // namespace silodem
