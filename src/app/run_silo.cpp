@@ -19,6 +19,7 @@
 #include "io/checkpoint.hpp"
 #include "io/config/load.hpp"
 #include "io/csv.hpp"
+#include "io/run_metrics.hpp"
 #include "scenario/discharge.hpp"
 #include "scenario/layered_filling.hpp"
 #include "scenario/outlet_stats.hpp"
@@ -435,10 +436,8 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
 RunCheckpoint open_run_checkpoint(const fs::path& out, bool force, const char* option) {
   const fs::path ck = out / "checkpoint.bin";
   if (!fs::exists(ck)) {
-    const std::string s = read_text(out / "summary.json");
     throw InputError({}, option,
-                     s.find("\"complete\" : true") != std::string::npos ||
-                             s.find("\"complete\": true") != std::string::npos
+                     run_state(out) == RunState::Finished  // summary.json read as JSON
                          ? fmt::format("'{}' is a complete run: nothing to resume", out.string())
                          : fmt::format("'{}' has no checkpoint.bin (a run interrupted before "
                                        "its discharge began restarts from the case: silodem "
