@@ -166,7 +166,8 @@ double shortest_collision_time(const ContactModel& m) {
   double t = 1e300;
   for (int a = 0; a < kNumCoals; ++a)
     for (int b = 0; b < kNumCoals; ++b)
-      t = std::min(t, m.pair_collision_time(a, b, coal_mass(a), coal_mass(b)));
+      t = std::min(t, m.pair_collision_time(a, b, coal_mass(a), coal_mass(b),
+                                            0.5 * kCoals[a].diameter, 0.5 * kCoals[b].diameter));
   return t;
 }
 

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <variant>
 
 #include "app/commands.hpp"
 #include "app/progress.hpp"
@@ -144,19 +145,51 @@ void export_bed(const fs::path& dir, const Case& c, const CaseReport& report,
   write_text(dir / "bed.csv", csv);
   const SiloGeometry& g = c.silo.geometry;
   const ContactModel& m = sim.model();
+  // The peers (bench/peers/) run a linear spring-dashpot; the other slots' numbers are read where
+  // the chosen law has them (zero where it has none, e.g. no friction for `none`).
   auto law_table = [](const ContactLaw& l) {
-    return toml::table{{"normal", l.law_names[0]},
-                       {"tangential", l.law_names[1]},
-                       {"rolling", l.law_names[2]},
-                       {"cohesion", l.law_names[3]},
-                       {"stiffness_n_N_m", l.np.stiffness},
-                       {"restitution", l.np.restitution},
-                       {"damping_ratio", l.np.damping_ratio},
-                       {"stiffness_t_N_m", l.tp.stiffness},
-                       {"tangential_damping_fraction", l.tp.damping_fraction},
-                       {"friction", l.tp.friction},
-                       {"rolling_friction", l.rp.friction},
-                       {"cohesion_force_N", l.cp.force}};
+    if (l.law_names[0] != NormalLinearSpringDashpot::name)
+      throw InputError({}, "contact.*.normal.law",
+                       fmt::format("'{}': the bed export for the peer codes needs '{}' (the "
+                                   "peers' model)",
+                                   l.law_names[0], NormalLinearSpringDashpot::name));
+    const auto& n = l.params<NormalLinearSpringDashpot>();
+    auto member = [](const auto& slot, auto get) {
+      return std::visit([&](const auto& x) { return get(x); }, slot);
+    };
+    const double ratio = member(l.tangential, [](const auto& q) {
+      if constexpr (requires { q.stiffness_ratio; }) return q.stiffness_ratio;
+      return 0.0;
+    });
+    return toml::table{
+        {"normal", l.law_names[0]},
+        {"tangential", l.law_names[1]},
+        {"rolling", l.law_names[2]},
+        {"cohesion", l.law_names[3]},
+        {"stiffness_n_N_m", n.stiffness},
+        {"restitution", n.restitution},
+        {"damping_ratio", n.damping_ratio},
+        {"stiffness_t_N_m", ratio * n.stiffness},
+        {"tangential_damping_fraction", member(l.tangential,
+                                               [](const auto& q) {
+                                                 if constexpr (requires { q.damping_fraction; })
+                                                   return q.damping_fraction;
+                                                 return 0.0;
+                                               })},
+        {"friction", member(l.tangential,
+                            [](const auto& q) {
+                              if constexpr (requires { q.friction; }) return q.friction;
+                              return 0.0;
+                            })},
+        {"rolling_friction", member(l.rolling,
+                                    [](const auto& q) {
+                                      if constexpr (requires { q.friction; }) return q.friction;
+                                      return 0.0;
+                                    })},
+        {"cohesion_force_N", member(l.cohesion, [](const auto& q) {
+           if constexpr (requires { q.force; }) return q.force;
+           return 0.0;
+         })}};
   };
   toml::array pairs, walls, coals;
   for (int a = 0; a < m.materials(); ++a) {

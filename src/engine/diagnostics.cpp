@@ -23,7 +23,7 @@ ContactTally Simulation::contact_tally() const {
     for (int e = list_.offset[i]; e < list_.offset[i + 1]; ++e) {
       const std::size_t j = std::size_t(list_.partner[e]);
       const ContactLaw& law = model_.pair(p_.material[i], p_.material[j]);
-      const double reach = (p_.radius[i] + p_.radius[j]) * (1.0 + law.cp.reach_over_d);
+      const double reach = (p_.radius[i] + p_.radius[j]) * (1.0 + law.reach_over_d);
       if (norm2(p_.x[i] - p_.x[j]) >= reach * reach) continue;
       ContactState copy = list_.state(std::size_t(e));
       const ContactResult r = evaluate_contact(law, pair_geometry(bi, body(p_, j)), copy, s_.dt);
@@ -34,7 +34,7 @@ ContactTally Simulation::contact_tally() const {
       t.cohesion_max_pp[j] = std::max(t.cohesion_max_pp[j], r.cohesion);
     }
     const ContactLaw& wl = model_.wall(p_.material[i]);
-    const double reach = p_.radius[i] * (1.0 + 2.0 * wl.cp.reach_over_d);
+    const double reach = p_.radius[i] * (1.0 + 2.0 * wl.reach_over_d);
     for_each_wall_contact(
         list_, walls_, i, p_.x[i], reach,
         [&](std::size_t e, const Wall& w, const WallHit& hit) {
@@ -54,21 +54,23 @@ EnergyBudget Simulation::energy() const {
   const double g = norm(s_.gravity);
   const Vec3 up = g > 0 ? -s_.gravity / g : Vec3{0, 0, 1};
   for (std::size_t i = 0; i < p_.size(); ++i) {
+    const BodyState bi = body(p_, i);
     e.translational += 0.5 * p_.mass[i] * norm2(p_.v[i]);
     e.rotational += 0.5 / p_.inv_inertia[i] * norm2(p_.omega[i]);
     e.gravitational += p_.mass[i] * g * dot(p_.x[i], up);
     for (int k = list_.offset[i]; k < list_.offset[i + 1]; ++k) {
-      const int j = list_.partner[k];
-      const double ov = p_.radius[i] + p_.radius[j] - norm(p_.x[i] - p_.x[j]);
-      if (ov > 0)
-        e.elastic += 0.5 * model_.pair(p_.material[i], p_.material[j]).np.stiffness * ov * ov;
+      const std::size_t j = std::size_t(list_.partner[k]);
+      const ContactGeometry gc = pair_geometry(bi, body(p_, j));
+      if (gc.overlap > 0)
+        e.elastic += normal_elastic_energy(model_.pair(p_.material[i], p_.material[j]), gc,
+                                           list_.state(std::size_t(k)));
     }
     const ContactLaw& wl = model_.wall(p_.material[i]);
     for_each_wall_contact(
-        list_, walls_, i, p_.x[i], p_.radius[i] * (1.0 + 2.0 * wl.cp.reach_over_d),
-        [&](std::size_t, const Wall&, const WallHit& hit) {
-          const double ov = p_.radius[i] - hit.distance;
-          if (ov > 0) e.elastic += 0.5 * wl.np.stiffness * ov * ov;
+        list_, walls_, i, p_.x[i], p_.radius[i] * (1.0 + 2.0 * wl.reach_over_d),
+        [&](std::size_t we, const Wall& w, const WallHit& hit) {
+          const ContactGeometry gc = wall_geometry(bi, hit.n, hit.distance, w.velocity());
+          if (gc.overlap > 0) e.elastic += normal_elastic_energy(wl, gc, list_.wall_state(we));
         },
         [](std::size_t) {});
   }

@@ -21,6 +21,7 @@ namespace silodem {
 // kernels and the same order of the sums as one contact at a time, vectorised.
 template <class K>
 void Simulation::pair_forces(int tid, double guard) {
+  constexpr int H = HistoryOf<K>::size;  // = list_.layout().size (the same laws)
   const std::size_t n = p_.size();
   const double dt = s_.dt;
   const int nm = model_.materials();
@@ -31,7 +32,7 @@ void Simulation::pair_forces(int tid, double guard) {
   // their history back, in list order.
   auto flush = [&] {
     for (std::size_t k = 0; k < w.sets.size(); ++k)
-      if (w.sets[k].count > 0) evaluate_lanes<K>(w.params[k], w.sets[k], dt);
+      if (w.sets[k].count > 0) evaluate_lanes<K>(*w.laws[k], w.sets[k], dt);
     for (int k = 0; k < w.count; ++k) {
       const PairWindow::Entry& en = w.entries[k];
       LaneSet& b = w.sets[std::size_t(en.set)];
@@ -43,7 +44,7 @@ void Simulation::pair_forces(int tid, double guard) {
       fb[std::size_t(en.j)] -= f;
       tb[std::size_t(en.i)] += LaneSet::get(b.ti, l);
       tb[std::size_t(en.j)] += LaneSet::get(b.tj, l);
-      list_.set_state(std::size_t(en.e), b.state(l));
+      list_.set_state_n<H>(std::size_t(en.e), b.state<H>(l));
     }
     for (auto& set : w.sets) set.count = 0;
     w.count = 0;
@@ -101,7 +102,8 @@ void Simulation::pair_forces(int tid, double guard) {
       n_hit += in;
       n_miss += 1 - in;
     }
-    for (int k = 0; k < n_miss; ++k) list_.set_state(std::size_t(w.misses[std::size_t(k)]), {});
+    for (int k = 0; k < n_miss; ++k)
+      list_.set_state_n<H>(std::size_t(w.misses[std::size_t(k)]), {});
     for (int k = 0; k < n_hit; ++k) {
       const int e = w.hits[std::size_t(k)];
       const int j = list_.partner[e];
@@ -109,8 +111,8 @@ void Simulation::pair_forces(int tid, double guard) {
       const double rj = p_.radius[uj];
       const int set = mi * nm + p_.material[uj];
       LaneSet& ls = w.sets[std::size_t(set)];
-      const int lane = ls.add(xi - p_.x[uj], vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj,
-                              p_.mass[uj], p_.inv_inertia[uj], list_.state(std::size_t(e)));
+      const int lane = ls.add<H>(xi - p_.x[uj], vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj,
+                                 p_.mass[uj], p_.inv_inertia[uj], list_.state_n<H>(std::size_t(e)));
       w.entries[w.count++] = {int(i), j, e, set, lane};
       // The flush adds into j's force and torque: requested now, they have arrived by then (a
       // miss there was the largest single stall of the pair loop).
@@ -137,7 +139,8 @@ void Simulation::wall_forces(int tid, double guard) {
   for (std::size_t i = 0; i < n; ++i) {
     if (list_.wall_offset[i] == list_.wall_offset[i + 1]) continue;
     const ContactLaw& law = model_.wall(p_.material[i]);
-    const double reach = p_.radius[i] * (1.0 + 2.0 * law.cp.reach_over_d);
+    const LawParamsOf<K> lp = typed_params<K>(law);
+    const double reach = p_.radius[i] * (1.0 + 2.0 * law.reach_over_d);
     const BodyState bi = body(p_, i);
     for_each_wall_contact(
         list_, walls_, i, p_.x[i], reach,
@@ -146,7 +149,7 @@ void Simulation::wall_forces(int tid, double guard) {
           const ContactGeometry g = wall_geometry(bi, hit.n, hit.distance, w.velocity());
           if (g.overlap > guard * p_.radius[i] && flags_[tid].i < 0)
             flags_[tid] = {long(i), -1 - long(list_.wall[e]), g.overlap};
-          const ContactResult r = evaluate<K>(law, g, st, dt);
+          const ContactResult r = evaluate<K>(lp, g, st, dt);
           list_.set_wall_state(e, st);
           fb[i] += r.force_i;
           tb[i] += r.torque_i;
@@ -170,8 +173,8 @@ void Simulation::compute_forces(bool finish_step) {
     for (auto& w : windows_) {
       w.sets.resize(std::size_t(nm * nm));
       for (int a = 0; a < nm; ++a)
-        for (int b = 0; b < nm; ++b) w.params.push_back(law_params(model_.pair(a, b)));
-      for (const auto& lp : w.params) w.reach = std::max(w.reach, 1.0 + lp.cp.reach_over_d);
+        for (int b = 0; b < nm; ++b) w.laws.push_back(&model_.pair(a, b));
+      for (const ContactLaw* l : w.laws) w.reach = std::max(w.reach, 1.0 + l->reach_over_d);
     }
   }
   written_.assign(std::size_t(nt), {0, 0});

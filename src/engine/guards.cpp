@@ -11,8 +11,9 @@ namespace silodem {
 
 std::string Simulation::likely_cause(std::size_t i) const {
   const int m = p_.material[i];
-  const double t_col = std::min(model_.pair_collision_time(m, m, p_.mass[i], p_.mass[i]),
-                                model_.wall_collision_time(m, p_.mass[i]));
+  const double t_col =
+      std::min(model_.pair_collision_time(m, m, p_.mass[i], p_.mass[i], p_.radius[i], p_.radius[i]),
+               model_.wall_collision_time(m, p_.mass[i], p_.radius[i]));
   if (s_.dt > t_col / 10.0)
     return fmt::format(
         "the time step dt = {:.3g} s is {:.2g} x this particle's collision time "

@@ -8,8 +8,9 @@
 // force buffers in list order. The arithmetic of each lane and the order of the sums are those of
 // the one-contact loop, so the forces are bitwise the same (tests/unit/engine/test_pair_batch.cpp).
 //
-// What keeps the lane loop vectorisable: the law's numbers come from one plain LawParams per set
-// (uniform across the lanes: no gathers, no flags read per lane), the lanes are contiguous arrays,
+// What keeps the lane loop vectorisable: the law's numbers come from one plain LawParamsOf<K> per
+// set, copied out of the ContactLaw before the loop (uniform across the lanes: no gathers, no
+// flags read per lane), the lanes are contiguous arrays,
 // and every kernel is branch-light enough for if-conversion. A law that breaks this still runs,
 // only one lane at a time: check with -fopt-info-vec (bench/README.md).
 #pragma once
@@ -43,18 +44,6 @@ namespace silodem {
 
 inline constexpr int kLanes = 64;
 
-// The numbers of one contact law, without ContactLaw's names and pointers.
-struct LawParams {
-  NormalParams np;
-  TangentialParams tp;
-  RollingParams rp;
-  CohesionParams cp;
-};
-
-inline LawParams law_params(const ContactLaw& law) {
-  return {law.np, law.tp, law.rp, law.cp};
-}
-
 // Up to kLanes contacts of one law: inputs, the history (read and written back) and outputs.
 struct LaneSet {
   int count = 0;
@@ -63,10 +52,11 @@ struct LaneSet {
   alignas(64) double d[3][kLanes], vi[3][kLanes], vj[3][kLanes];
   alignas(64) double wi[3][kLanes], wj[3][kLanes];
   alignas(64) double ri[kLanes], rj[kLanes], mi[kLanes], mj[kLanes], inv_ii[kLanes], inv_ij[kLanes];
-  alignas(64) double hist[6][kLanes];  // tangential spring x, y, z; rolling spring x, y, z
+  alignas(64) double hist[kMaxHistory][kLanes];  // the laws' history values (contact_history.hpp)
   alignas(64) double f[3][kLanes], ti[3][kLanes], tj[3][kLanes], overlap[kLanes];
 
-  // Copies one pair in (x_i - x_j, i's data, j's data, the history); returns its lane.
+  // Copies one pair in (x_i - x_j, i's data, j's data, the H history values); returns its lane.
+  template <int H>
   SILODEM_HOT int add(const Vec3& x_ij, const Vec3& v_i, const Vec3& w_i, double r_i, double m_i,
                       double inv_i_i, const Vec3& v_j, const Vec3& w_j, double r_j, double m_j,
                       double inv_i_j, const ContactState& s) {
@@ -75,13 +65,15 @@ struct LaneSet {
     put(vj, l, v_j), put(wj, l, w_j);
     ri[l] = r_i, mi[l] = m_i, inv_ii[l] = inv_i_i;
     rj[l] = r_j, mj[l] = m_j, inv_ij[l] = inv_i_j;
-    hist[0][l] = s.tangential.x, hist[1][l] = s.tangential.y, hist[2][l] = s.tangential.z;
-    hist[3][l] = s.rolling.x, hist[4][l] = s.rolling.y, hist[5][l] = s.rolling.z;
+    for (int k = 0; k < H; ++k) hist[k][l] = s.h[k];
     return l;
   }
   static Vec3 get(const double (&a)[3][kLanes], int l) { return {a[0][l], a[1][l], a[2][l]}; }
+  template <int H>
   ContactState state(int l) const {
-    return {{hist[0][l], hist[1][l], hist[2][l]}, {hist[3][l], hist[4][l], hist[5][l]}};
+    ContactState s;
+    for (int k = 0; k < H; ++k) s.h[k] = hist[k][l];
+    return s;
   }
 
  private:
@@ -93,8 +85,9 @@ struct LaneSet {
 // Evaluates the `count` contacts of one set with the laws K and the numbers `law` (PHYSICS.md
 // 2-3 through evaluate<K>): forces on i, torques on i and j, overlaps, and the new history.
 template <class K>
-SILODEM_LANE_CLONES void evaluate_lanes(const LawParams& law, LaneSet& b, double dt) {
-  const LawParams lp = law;  // read once, before the loop: nothing in it is loaded per lane
+SILODEM_LANE_CLONES void evaluate_lanes(const ContactLaw& law, LaneSet& b, double dt) {
+  constexpr int H = HistoryOf<K>::size;
+  const LawParamsOf<K> lp = typed_params<K>(law);  // once, before the loop: nothing per lane
   const int count = b.count;
   SILODEM_LANES_INDEPENDENT
   for (int l = 0; l < count; ++l) {
@@ -113,15 +106,14 @@ SILODEM_LANE_CLONES void evaluate_lanes(const LawParams& law, LaneSet& b, double
                        1.0 / b.inv_ij[l],
                        b.inv_ij[l]};
     const ContactGeometry g = pair_geometry(bi, bj);
-    ContactState s{{b.hist[0][l], b.hist[1][l], b.hist[2][l]},
-                   {b.hist[3][l], b.hist[4][l], b.hist[5][l]}};
+    ContactState s;
+    for (int k = 0; k < H; ++k) s.h[k] = b.hist[k][l];
     const ContactResult r = evaluate<K>(lp, g, s, dt);
     b.f[0][l] = r.force_i.x, b.f[1][l] = r.force_i.y, b.f[2][l] = r.force_i.z;
     b.ti[0][l] = r.torque_i.x, b.ti[1][l] = r.torque_i.y, b.ti[2][l] = r.torque_i.z;
     b.tj[0][l] = r.torque_j.x, b.tj[1][l] = r.torque_j.y, b.tj[2][l] = r.torque_j.z;
     b.overlap[l] = g.overlap;
-    b.hist[0][l] = s.tangential.x, b.hist[1][l] = s.tangential.y, b.hist[2][l] = s.tangential.z;
-    b.hist[3][l] = s.rolling.x, b.hist[4][l] = s.rolling.y, b.hist[5][l] = s.rolling.z;
+    for (int k = 0; k < H; ++k) b.hist[k][l] = s.h[k];
   }
 }
 
@@ -131,10 +123,10 @@ struct alignas(64) PairWindow {
     int i, j, e;    // particles and list entry
     int set, lane;  // where its data are
   };
-  std::vector<LaneSet> sets;      // one per law (material pair a * n + b)
-  std::vector<LawParams> params;  // the numbers of each set's law
-  std::vector<int> hits, misses;  // one particle's list entries in range and out of range
-  double reach = 1.0;             // 1 + the longest reach_over_d of the sets' laws
+  std::vector<LaneSet> sets;            // one per law (material pair a * n + b)
+  std::vector<const ContactLaw*> laws;  // each set's law
+  std::vector<int> hits, misses;        // one particle's list entries in range and out of range
+  double reach = 1.0;                   // 1 + the longest reach_over_d of the sets' laws
   Entry entries[kLanes];
   int count = 0;
   char pad[64];  // the next thread's window starts on another cache line

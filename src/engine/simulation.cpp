@@ -30,13 +30,9 @@ Simulation::Simulation(ContactModel model, SimulationSettings settings)
   omp_set_dynamic(0);  // exactly s_.threads threads: the force summation order depends on it
 #endif
   list_.threads = s_.threads;
-  bool springs = false;
-  for (int a = 0; a < model_.materials(); ++a) {
-    springs = springs || model_.wall(a).rolling_spring;
-    for (int b = 0; b < model_.materials(); ++b)
-      springs = springs || model_.pair(a, b).rolling_spring;
-  }
-  list_.rolling_springs = springs;
+  // One [contact.particle_particle] and one [contact.particle_wall] section: every coal pair has
+  // the laws (and so the history layout) of pair (0, 0), every wall contact those of wall 0.
+  if (model_.materials() > 0) list_.set_layouts(model_.pair(0, 0).layout, model_.wall(0).layout);
 }
 
 void Simulation::add_wall(std::unique_ptr<Wall> w) {

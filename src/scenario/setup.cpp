@@ -60,34 +60,38 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
   ContactModel model =
       ContactModel::build(c.particle_particle, c.particle_wall, cohesion_cg, c.cg, &r.warnings);
 
-  // Masses present: the coals' CG particles and any explicitly sized particle.
-  std::vector<double> min_mass(c.coals.size(), 0.0);
-  for (std::size_t a = 0; a < c.coals.size(); ++a)
-    min_mass[a] =
-        sphere_mass(SizeSampler(c.coals[a], c.cg).min_diameter(), c.coals[a].true_density);
+  // Sizes present: the coals' CG particles and any explicitly sized particle.
+  std::vector<double> min_mass(c.coals.size(), 0.0), min_radius(c.coals.size(), 0.0);
+  for (std::size_t a = 0; a < c.coals.size(); ++a) {
+    const double d = SizeSampler(c.coals[a], c.cg).min_diameter();
+    min_mass[a] = sphere_mass(d, c.coals[a].true_density);
+    min_radius[a] = 0.5 * d;
+  }
   for (const auto& p : c.particles)
-    if (p.diameter > 0)
+    if (p.diameter > 0) {
       min_mass[p.coal] =
           std::min(min_mass[p.coal], sphere_mass(p.diameter, c.coals[p.coal].true_density));
+      min_radius[p.coal] = std::min(min_radius[p.coal], 0.5 * p.diameter);
+    }
 
   r.collision_time_min = 1e300;
   for (std::size_t a = 0; a < c.coals.size(); ++a) {
     auto& cr = r.coals[a];
-    const NormalParams& np = model.pair(int(a), int(a)).np;
+    // The restitution the normal law uses after the CG policy (every normal law takes one).
     cr.restitution = restitution_cg(c.particle_particle.normal.values.number("restitution"), c.cg);
-    cr.restitution.value = np.restitution;
     const double m_eff = effective_mass(cr.cg_mass, cr.cg_mass);
-    cr.damping_normal = 2.0 * np.damping_ratio * std::sqrt(m_eff * np.stiffness);
-    cr.collision_time = model.pair_collision_time(int(a), int(a), cr.cg_mass, cr.cg_mass);
-    const NormalParams& wp = model.wall(int(a)).np;
-    cr.wall_damping_normal = 2.0 * wp.damping_ratio * std::sqrt(cr.cg_mass * wp.stiffness);
-    cr.wall_collision_time = model.wall_collision_time(int(a), cr.cg_mass);
+    const double r_cg = 0.5 * cr.cg_diameter;
+    cr.damping_normal = normal_damping_coefficient(model.pair(int(a), int(a)), m_eff, 0.5 * r_cg);
+    cr.collision_time =
+        model.pair_collision_time(int(a), int(a), cr.cg_mass, cr.cg_mass, r_cg, r_cg);
+    cr.wall_damping_normal = normal_damping_coefficient(model.wall(int(a)), cr.cg_mass, r_cg);
+    cr.wall_collision_time = model.wall_collision_time(int(a), cr.cg_mass, r_cg);
     for (std::size_t b = 0; b < c.coals.size(); ++b)
-      r.collision_time_min =
-          std::min(r.collision_time_min,
-                   model.pair_collision_time(int(a), int(b), min_mass[a], min_mass[b]));
-    r.collision_time_min =
-        std::min(r.collision_time_min, model.wall_collision_time(int(a), min_mass[a]));
+      r.collision_time_min = std::min(
+          r.collision_time_min, model.pair_collision_time(int(a), int(b), min_mass[a], min_mass[b],
+                                                          min_radius[a], min_radius[b]));
+    r.collision_time_min = std::min(r.collision_time_min,
+                                    model.wall_collision_time(int(a), min_mass[a], min_radius[a]));
   }
 
   if (c.time.time_step > 0.0) {

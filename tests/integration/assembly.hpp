@@ -52,7 +52,7 @@ inline std::unique_ptr<Simulation> make_sim(const test::Laws& particle, const te
                                             const Grain& g, double skin_over_d = 0.25) {
   ContactModel model = test::model_of(particle, {0.0}, &wall);
   SimulationSettings s;
-  s.dt = model.pair_collision_time(0, 0, g.mass(), g.mass()) / 50.0;
+  s.dt = model.pair_collision_time(0, 0, g.mass(), g.mass(), g.radius(), g.radius()) / 50.0;
   s.gravity = {0.0, 0.0, -kG};
   s.skin = skin_over_d * g.d;
   s.threads = 2;

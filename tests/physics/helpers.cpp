@@ -2,6 +2,9 @@
 #include "helpers.hpp"
 
 #include <stdexcept>
+#include <variant>
+
+#include "model/contact/dispatch.hpp"
 
 namespace silodem::test {
 namespace {
@@ -45,6 +48,33 @@ ContactModel model_of(const Laws& pp, const std::vector<double>& cohesion_cg, co
 ContactLaw law_of(const Laws& l, bool wall, double f_i, double f_j, CoarseGraining cg) {
   LawContext ctx{&cg, f_i, f_j, wall, nullptr};
   return configure_contact_law(spec_of(l, wall), ctx);
+}
+
+NormalForce normal_force(const ContactLaw& law, const ContactGeometry& g) {
+  return with_kernels(law, [&](auto k) {
+    using N = typename decltype(k)::Normal;
+    return N::kernel(law.params<N>(), g, nullptr);
+  });
+}
+
+NormalForce normal_force_with(const ContactLaw& law, const ContactGeometry& g, ContactState& s) {
+  return with_kernels(law, [&](auto k) {
+    using N = typename decltype(k)::Normal;
+    return N::kernel(law.params<N>(), g, s.h);
+  });
+}
+
+double normal_stiffness(const ContactLaw& law) {
+  return law.params<NormalLinearSpringDashpot>().stiffness;
+}
+
+double cohesion_force(const ContactLaw& law) {
+  return std::visit(
+      [](const auto& p) {
+        if constexpr (requires { p.force; }) return p.force;
+        return 0.0;
+      },
+      law.cohesion);
 }
 
 }  // namespace silodem::test

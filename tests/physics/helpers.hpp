@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "engine/simulation.hpp"
@@ -30,6 +31,19 @@ ContactModel model_of(const Laws& pp, const std::vector<double>& cohesion_cg = {
                       const Laws* wall = nullptr, CoarseGraining cg = {});
 ContactLaw law_of(const Laws& l, bool wall, double f_i = 0.0, double f_j = 0.0,
                   CoarseGraining cg = {});
+
+// A law's kernel with the Params `law` was configured with (Law must be the law chosen there).
+template <class Law, class... Args>
+auto kernel(const ContactLaw& law, Args&&... args) {
+  return Law::kernel(law.params<Law>(), std::forward<Args>(args)...);
+}
+// The normal law's force at g (any normal law), and numbers of the linear normal law and of the
+// cohesion law (0 for a law without a force).
+NormalForce normal_force(const ContactLaw& law, const ContactGeometry& g);
+// The same with the normal law's history in s (updated).
+NormalForce normal_force_with(const ContactLaw& law, const ContactGeometry& g, ContactState& s);
+double normal_stiffness(const ContactLaw& law);
+double cohesion_force(const ContactLaw& law);
 
 inline double sphere_mass_of(double d, double rho) {
   return 3.14159265358979323846 / 6.0 * d * d * d * rho;

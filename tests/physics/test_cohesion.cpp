@@ -27,7 +27,7 @@ test::Laws cohesive(double kn, double e = 0.1) {
 double pull_apart(double kn, double p_over_f, bool wall) {
   ContactModel model = test::model_of(cohesive(kn), {kFL});
   const double t_col =
-      wall ? model.wall_collision_time(0, kM) : model.pair_collision_time(0, 0, kM, kM);
+      wall ? model.wall_collision_time(0, kM, kR) : model.pair_collision_time(0, 0, kM, kM, kR, kR);
   SimulationSettings s;
   s.dt = t_col / 50.0;
   s.gravity = {};
@@ -78,7 +78,7 @@ TEST(Cohesion, TC1_PullOffIsFLIndependentOfStiffness) {
 // Head-on impact at v_in of two equal bonded-to-be particles: true if they stay together.
 bool captured(double kn, double e, double v_in) {
   ContactModel model = test::model_of(cohesive(kn, e), {kFL});
-  const double t_col = model.pair_collision_time(0, 0, kM, kM);
+  const double t_col = model.pair_collision_time(0, 0, kM, kM, kR, kR);
   SimulationSettings s;
   s.dt = t_col / 100.0;
   s.gravity = {};
@@ -114,7 +114,7 @@ bool chain_holds(int n, double k, double alpha) {
   const double f_cg = cg.cohesion_force(f_l), m = cg.mass(m1), r = 0.5 * cg.diameter(d);
   const double kn = 2e4 * k;
   ContactModel model = test::model_of(cohesive(kn, 0.3), {f_cg}, nullptr, cg);
-  const double t_col = model.pair_collision_time(0, 0, m, m);
+  const double t_col = model.pair_collision_time(0, 0, m, m, r, r);
   SimulationSettings s;
   s.dt = t_col / 50.0;
   s.gravity = {};
@@ -154,7 +154,7 @@ double slip_force(bool cap_sees_cohesion) {
   l.tangential = "linear_history";
   l.tangential_p = {{"friction", 0.3}, {"cap_sees_cohesion", cap_sees_cohesion ? 1.0 : 0.0}};
   ContactModel model = test::model_of(l, {kFL});
-  const double t_col = model.wall_collision_time(0, kM);
+  const double t_col = model.wall_collision_time(0, kM, kR);
   SimulationSettings s;
   s.dt = t_col / 50.0;
   s.gravity = {};

@@ -17,7 +17,7 @@ double max_energy_error(double dt_factor, long steps) {
   const double r = 2e-3, m = test::sphere_mass_of(2 * r, 1500), box = 0.04;
   ContactModel model = test::model_of(l);
   SimulationSettings s;
-  s.dt = model.pair_collision_time(0, 0, m, m) / dt_factor;
+  s.dt = model.pair_collision_time(0, 0, m, m, r, r) / dt_factor;
   s.gravity = {};
   s.threads = 1;
   s.skin = 0.5 * r;
@@ -67,7 +67,7 @@ TEST(Energy, ASwitchedOffWallStoresNoEnergyAndMakesNoContact) {
   const double r = 2e-3, m = test::sphere_mass_of(2 * r, 1500), delta = 1e-4;
   ContactModel model = test::model_of(l);
   SimulationSettings s;
-  s.dt = model.wall_collision_time(0, m) / 50;
+  s.dt = model.wall_collision_time(0, m, r) / 50;
   s.gravity = {};
   s.threads = 1;
   s.skin = 0.5 * r;

@@ -27,7 +27,7 @@ Simulation make(double dt_over_tcol, double max_speed = 0.0) {
   test::Laws l;
   l.normal_p = {{"stiffness", 1e4}, {"restitution", 0.5}};
   ContactModel model = test::model_of(l);
-  const double t_col = model.pair_collision_time(0, 0, kM, kM);
+  const double t_col = model.pair_collision_time(0, 0, kM, kM, kR, kR);
   SimulationSettings s;
   s.dt = dt_over_tcol * t_col;
   s.gravity = {};

@@ -27,7 +27,7 @@ Ball ball_on_plane(const test::Laws& l, Vec3 v0, Vec3 w0, Vec3 gravity = {0, 0, 
   b.m = test::sphere_mass_of(2 * b.r, 2500);
   ContactModel model = test::model_of(l);
   SimulationSettings s;
-  s.dt = model.wall_collision_time(0, b.m) / dt_factor;
+  s.dt = model.wall_collision_time(0, b.m, b.r) / dt_factor;
   s.gravity = gravity;
   s.threads = 1;
   b.sim = std::make_unique<Simulation>(std::move(model), s);
@@ -221,7 +221,7 @@ TEST(Rolling, MfixChattersAtRestUnlessRegularized) {
   const double m = test::sphere_mass_of(1e-2, 2500), r = 5e-3;
   const double torque = 0.6 * 2 * r * m * kG, inertia = 0.4 * m * r * r;
   ContactModel model = test::model_of(frictional(0.5));
-  const double dt = model.wall_collision_time(0, m) / 50;
+  const double dt = model.wall_collision_time(0, m, r) / 50;
   EXPECT_GT(mfix_rest_spin(false), 0.1 * torque * dt / inertia);
   EXPECT_LT(mfix_rest_spin(true), 1e-6);
 }

@@ -31,7 +31,7 @@ std::vector<double> bounce_peaks(double e, double kn) {
   l.normal_p = {{"stiffness", kn}, {"restitution", e}};
   ContactModel model = test::model_of(l);
   SimulationSettings s;
-  s.dt = model.wall_collision_time(0, m) / 50.0;
+  s.dt = model.wall_collision_time(0, m, r) / 50.0;
   s.threads = 1;
   s.skin = 0.02;
   Simulation sim(std::move(model), s);

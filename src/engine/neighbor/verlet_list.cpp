@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "engine/neighbor/verlet_list.hpp"
 
+#include "model/contact/registry.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
@@ -12,12 +14,6 @@
 namespace silodem {
 namespace {
 
-bool nonzero(const ContactState& s) {
-  return norm2(s.tangential) > 0.0 || norm2(s.rolling) > 0.0;
-}
-ContactState flipped(const ContactState& s) {
-  return {-s.tangential, -s.rolling};
-}
 bool key_less(int a1, int b1, int a2, int b2) {
   return a1 != a2 ? a1 < a2 : b1 < b2;
 }
@@ -56,17 +52,19 @@ void VerletList::stash_history(const ParticleStore& p) {
   // Exact sizes first: the stash exists beside the list during a rebuild, so it sets the peak
   // memory (a doubling vector would hold up to twice what it needs).
   std::size_t pairs = 0, walls = 0;
-  for (std::size_t e = 0; e < spring.size(); ++e) pairs += nonzero(state(e)) ? 1 : 0;
-  for (std::size_t e = 0; e < wall_spring.size(); ++e) walls += nonzero(wall_state(e)) ? 1 : 0;
+  if (pair_layout.size > 0)
+    for (std::size_t e = 0; e < partner.size(); ++e) pairs += state(e).nonzero() ? 1 : 0;
+  if (wall_layout.size > 0)
+    for (std::size_t e = 0; e < wall.size(); ++e) walls += wall_state(e).nonzero() ? 1 : 0;
   saved_pairs_.reserve(pairs);
   saved_walls_.reserve(walls);
   // In list order, which is (i, j) order: sorted without sorting.
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n && pairs + walls > 0; ++i) {
     for (int e = offset[i]; e < offset[i + 1]; ++e)
-      if (const ContactState s = state(std::size_t(e)); nonzero(s))
+      if (const ContactState s = state(std::size_t(e)); s.nonzero())
         saved_pairs_.push_back({int(i), partner[e], s});
     for (int e = wall_offset[i]; e < wall_offset[i + 1]; ++e)
-      if (const ContactState s = wall_state(std::size_t(e)); nonzero(s))
+      if (const ContactState s = wall_state(std::size_t(e)); s.nonzero())
         saved_walls_.push_back({int(i), wall[e], s});
   }
   stashed_ = true;
@@ -75,11 +73,12 @@ void VerletList::stash_history(const ParticleStore& p) {
 namespace {
 
 // Applies old_to_new to a stash sorted by (a, b), in place, and sorts it again if it needs it.
-// Entries of removed particles go; a pair whose order turned is swapped and flipped. The removal
-// of Simulation keeps the others' order, so after it the stash is still sorted; a reordering needs
-// the sort.
+// Entries of removed particles go; a pair whose order turned is swapped and its state turned with
+// the layout's factors. The removal of Simulation keeps the others' order, so after it the stash
+// is still sorted; a reordering needs the sort.
 template <class Saved>
-void renumber_stash(std::vector<Saved>& v, const std::vector<int>& to, bool pairs) {
+void renumber_stash(std::vector<Saved>& v, const std::vector<int>& to, bool pairs,
+                    const StateLayout& layout) {
   auto map = [&](int k) {
     if (k < 0 || std::size_t(k) >= to.size())
       throw std::logic_error("VerletList::renumber: the map does not cover the stash");
@@ -90,7 +89,7 @@ void renumber_stash(std::vector<Saved>& v, const std::vector<int>& to, bool pair
     const Saved s = v[k];
     const int a = map(s.a), b = pairs ? map(s.b) : s.b;
     if (a < 0 || b < 0) continue;
-    v[kept++] = (!pairs || a < b) ? Saved{a, b, s.s} : Saved{b, a, flipped(s.s)};
+    v[kept++] = (!pairs || a < b) ? Saved{a, b, s.s} : Saved{b, a, layout.swapped(s.s)};
   }
   v.resize(kept);
   auto less = [](const Saved& l, const Saved& r) { return key_less(l.a, l.b, r.a, r.b); };
@@ -101,8 +100,8 @@ void renumber_stash(std::vector<Saved>& v, const std::vector<int>& to, bool pair
 
 void VerletList::renumber(const std::vector<int>& old_to_new) {
   if (!stashed_) throw std::logic_error("VerletList::renumber without stash_history");
-  renumber_stash(saved_pairs_, old_to_new, /*pairs=*/true);
-  renumber_stash(saved_walls_, old_to_new, /*pairs=*/false);
+  renumber_stash(saved_pairs_, old_to_new, /*pairs=*/true, pair_layout);
+  renumber_stash(saved_walls_, old_to_new, /*pairs=*/false, wall_layout);
 }
 
 void VerletList::build(const ParticleStore& p, const WallList& walls, double skin_,
@@ -189,10 +188,8 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
 // The stash and the new list are both sorted by (i, j) (walls: (i, wall)): one merge walk.
 void VerletList::attach_history(const ParticleStore& p) {
   const std::size_t n = p.size();
-  spring.assign(partner.size(), Vec3{});
-  wall_spring.assign(wall.size(), Vec3{});
-  roll.assign(rolling_springs ? partner.size() : 0, Vec3{});
-  wall_roll.assign(rolling_springs ? wall.size() : 0, Vec3{});
+  hist.assign(partner.size() * std::size_t(pair_layout.size), 0.0);
+  wall_hist.assign(wall.size() * std::size_t(wall_layout.size), 0.0);
   if (saved_pairs_.empty() && saved_walls_.empty()) return;
   const int nt = n > 256 ? std::max(1, threads) : 1;
 #pragma omp parallel num_threads(nt)
@@ -244,14 +241,12 @@ bool VerletList::remove(const ParticleStore& p, const std::vector<int>& to) {
         const int j = to[std::size_t(partner[e])];
         if (j < 0) continue;
         partner[w] = j;
-        spring[w] = spring[std::size_t(e)];
-        if (rolling_springs) roll[w] = roll[std::size_t(e)];
+        if (pair_layout.size > 0) set_state(w, state(std::size_t(e)));
         ++w;
       }
       for (int e = we_begin; e < we_end; ++e) {
         wall[ww] = wall[std::size_t(e)];
-        wall_spring[ww] = wall_spring[std::size_t(e)];
-        if (rolling_springs) wall_roll[ww] = wall_roll[std::size_t(e)];
+        if (wall_layout.size > 0) set_wall_state(ww, wall_state(std::size_t(e)));
         ++ww;
       }
       x_at_build_[row] = x_at_build_[i];
@@ -262,8 +257,9 @@ bool VerletList::remove(const ParticleStore& p, const std::vector<int>& to) {
     e_begin = e_end, we_begin = we_end;
   }
   offset.resize(n_new + 1), wall_offset.resize(n_new + 1), x_at_build_.resize(n_new);
-  partner.resize(w), spring.resize(w), wall.resize(ww), wall_spring.resize(ww);
-  if (rolling_springs) roll.resize(w), wall_roll.resize(ww);
+  partner.resize(w), wall.resize(ww);
+  hist.resize(w * std::size_t(pair_layout.size)),
+      wall_hist.resize(ww * std::size_t(wall_layout.size));
   ids_hash_ = ids_hash(p, n_new);
   return true;
 }
@@ -277,55 +273,111 @@ bool VerletList::needs_rebuild(const ParticleStore& p) const {
   return moved != 0;
 }
 
-// The stash lives only inside one Simulation call (stash, move the particles, renumber, build),
-// so a checkpoint never holds one; its fields stay in the format (as empty vectors of the
-// original 64-byte records, which the format writes as a zero count) so that older checkpoints
-// load.
+void VerletList::set_layouts(const StateLayout& pairs, const StateLayout& walls) {
+  if (!partner.empty() || !wall.empty())
+    throw std::logic_error("VerletList::set_layouts after the list was built");
+  pair_layout = pairs;
+  wall_layout = walls;
+}
+
 namespace {
-struct SavedInFile {
-  std::uint64_t a, b;
-  ContactState s;
+
+// The history in a file names, per slot, the law that kept it and its count, so that a run whose
+// laws changed since (a discharge from another run's fill, say) keeps what its laws share and
+// drops the rest.
+void put_history(ByteWriter& w, const StateLayout& l, const std::vector<double>& v) {
+  w.put(std::uint32_t(l.size));
+  for (int s = 0; s < 4; ++s) w.put(l.law[s]), w.put(std::uint32_t(l.count[s]));
+  w.put(v);
+}
+
+void get_history(ByteReader& r, const StateLayout& l, std::size_t entries,
+                 std::vector<double>& out) {
+  const std::size_t size = r.get<std::uint32_t>();
+  std::string law[4];
+  std::uint32_t count[4];
+  std::size_t offset[4], at = 0;
+  for (int s = 0; s < 4; ++s) {
+    r.get(law[s]), r.get(count[s]);
+    offset[s] = at, at += count[s];
+  }
+  std::vector<double> in;
+  r.get(in);
+  if (at != size || in.size() != entries * size)
+    throw std::runtime_error("checkpoint: the contact history does not match its list");
+  out.assign(entries * std::size_t(l.size), 0.0);
+  for (int s = 0; s < 4; ++s) {
+    if (l.count[s] == 0 || law[s] != l.law[s] || int(count[s]) != l.count[s]) continue;
+    for (std::size_t e = 0; e < entries; ++e)
+      for (int k = 0; k < l.count[s]; ++k)
+        out[e * std::size_t(l.size) + std::size_t(l.offset[s] + k)] =
+            in[e * size + offset[s] + std::size_t(k)];
+  }
+}
+
+// Files written before the laws declared their history ("LIST"): per entry the tangential spring
+// (linear_history's) and the rolling spring (epsd's), whatever the laws were.
+struct LegacyState {
+  Vec3 tangential, rolling;
 };
+struct LegacySaved {
+  std::uint64_t a, b;
+  LegacyState s;
+};
+
+void from_legacy(const std::vector<LegacyState>& in, const StateLayout& l,
+                 std::vector<double>& out) {
+  out.assign(in.size() * std::size_t(l.size), 0.0);
+  const int t = int(Slot::Tangential), ro = int(Slot::Rolling);
+  for (std::size_t e = 0; e < in.size(); ++e) {
+    double* h = out.data() + e * std::size_t(l.size);
+    if (l.count[t] == 3)
+      h[l.offset[t]] = in[e].tangential.x, h[l.offset[t] + 1] = in[e].tangential.y,
+      h[l.offset[t] + 2] = in[e].tangential.z;
+    if (l.count[ro] == 3)
+      h[l.offset[ro]] = in[e].rolling.x, h[l.offset[ro] + 1] = in[e].rolling.y,
+      h[l.offset[ro] + 2] = in[e].rolling.z;
+  }
+}
+
 }  // namespace
 
-// The file holds one ContactState per pair (tangential and rolling spring), as it always has.
+// A checkpoint never holds the stash (it lives only inside one Simulation call: stash, move the
+// particles, renumber, build).
 void VerletList::save(ByteWriter& w) const {
   if (stashed_) throw std::logic_error("VerletList::save between stash_history and build");
-  auto put_states = [&](std::size_t n, auto&& at) {
-    w.put(std::uint64_t(n));
-    for (std::size_t e = 0; e < n; ++e) w.put(at(e));
-  };
-  w.tag("LIST");
+  w.tag("LST2");
   w.put(offset), w.put(partner);
-  put_states(spring.size(), [&](std::size_t e) { return state(e); });
+  put_history(w, pair_layout, hist);
   w.put(wall_offset), w.put(wall);
-  put_states(wall_spring.size(), [&](std::size_t e) { return wall_state(e); });
+  put_history(w, wall_layout, wall_hist);
   w.put(builds), w.put(skin), w.put(x_at_build_);
-  w.put(std::uint8_t(0)), w.put(std::vector<SavedInFile>{}), w.put(std::vector<SavedInFile>{});
 }
 
 void VerletList::load(ByteReader& r) {
-  // A rolling spring that this run keeps none of (its laws changed since) is dropped.
-  auto split = [&](const std::vector<ContactState>& in, std::vector<Vec3>& t,
-                   std::vector<Vec3>& rl) {
-    t.resize(in.size());
-    rl.resize(rolling_springs ? in.size() : 0);
-    for (std::size_t e = 0; e < in.size(); ++e) {
-      t[e] = in[e].tangential;
-      if (rolling_springs) rl[e] = in[e].rolling;
-    }
-  };
-  std::vector<ContactState> pairs_in, walls_in;
-  r.tag("LIST");
-  r.get(offset), r.get(partner), r.get(pairs_in), r.get(wall_offset), r.get(wall), r.get(walls_in);
-  split(pairs_in, spring, roll);
-  split(walls_in, wall_spring, wall_roll);
-  r.get(builds), r.get(skin), r.get(x_at_build_);
-  const bool stashed = r.get<std::uint8_t>() != 0;
-  std::vector<SavedInFile> pairs, walls;
-  r.get(pairs), r.get(walls);
-  if (stashed || !pairs.empty() || !walls.empty())
-    throw std::runtime_error("checkpoint: the neighbour list holds a stashed contact history");
+  if (r.next_is("LIST")) {
+    std::vector<LegacyState> pairs_in, walls_in;
+    r.tag("LIST");
+    r.get(offset), r.get(partner), r.get(pairs_in), r.get(wall_offset), r.get(wall),
+        r.get(walls_in);
+    if (pairs_in.size() != partner.size() || walls_in.size() != wall.size())
+      throw std::runtime_error("checkpoint: the contact history does not match its list");
+    from_legacy(pairs_in, pair_layout, hist);
+    from_legacy(walls_in, wall_layout, wall_hist);
+    r.get(builds), r.get(skin), r.get(x_at_build_);
+    const bool stashed = r.get<std::uint8_t>() != 0;
+    std::vector<LegacySaved> pairs, walls;
+    r.get(pairs), r.get(walls);
+    if (stashed || !pairs.empty() || !walls.empty())
+      throw std::runtime_error("checkpoint: the neighbour list holds a stashed contact history");
+  } else {
+    r.tag("LST2");
+    r.get(offset), r.get(partner);
+    get_history(r, pair_layout, partner.size(), hist);
+    r.get(wall_offset), r.get(wall);
+    get_history(r, wall_layout, wall.size(), wall_hist);
+    r.get(builds), r.get(skin), r.get(x_at_build_);
+  }
   stashed_ = false;
   check_ids_ = false;  // the ids are not in the list's part of the file: trust the checkpoint
 }

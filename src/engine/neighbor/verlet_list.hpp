@@ -49,28 +49,31 @@ class VerletList {
 
   std::vector<int> offset, partner;    // pairs of i: partner[offset[i] .. offset[i+1])
   std::vector<int> wall_offset, wall;  // wall candidates of i
-  // The history of list pair e and of wall candidate e: the tangential spring, and the rolling
-  // spring only if `rolling_springs` (the EPSD law's; the other rolling laws keep none, and
-  // their pairs' rolling spring is always zero). Split so that a run without one does not carry
-  // 24 bytes of zeros per listed pair through every step.
-  ContactState state(std::size_t e) const {
-    return {spring[e], rolling_springs ? roll[e] : Vec3{}};
-  }
-  void set_state(std::size_t e, const ContactState& s) {
-    spring[e] = s.tangential;
-    if (rolling_springs) roll[e] = s.rolling;
-  }
-  ContactState wall_state(std::size_t e) const {
-    return {wall_spring[e], rolling_springs ? wall_roll[e] : Vec3{}};
-  }
+  // The history of list pair e and of wall candidate e: the values the contact laws keep,
+  // `pair_layout.size` (`wall_layout.size`) doubles per entry, laid out as the laws declare
+  // (contact_history.hpp). A run whose laws keep nothing carries no history at all.
+  ContactState state(std::size_t e) const { return read(hist, pair_layout.size, e); }
+  void set_state(std::size_t e, const ContactState& s) { write(hist, pair_layout.size, e, s); }
+  ContactState wall_state(std::size_t e) const { return read(wall_hist, wall_layout.size, e); }
   void set_wall_state(std::size_t e, const ContactState& s) {
-    wall_spring[e] = s.tangential;
-    if (rolling_springs) wall_roll[e] = s.rolling;
+    write(wall_hist, wall_layout.size, e, s);
   }
-  std::vector<Vec3> spring, roll, wall_spring, wall_roll;
-  // Keep the rolling springs (set before the first build or load; Simulation sets it from its
-  // contact laws).
-  bool rolling_springs = true;
+  // The same with the size known when compiling (the force loop's; H = pair_layout.size).
+  template <int H>
+  ContactState state_n(std::size_t e) const {
+    ContactState s;
+    for (int k = 0; k < H; ++k) s.h[k] = hist[e * H + std::size_t(k)];
+    return s;
+  }
+  template <int H>
+  void set_state_n(std::size_t e, const ContactState& s) {
+    for (int k = 0; k < H; ++k) hist[e * H + std::size_t(k)] = s.h[k];
+  }
+  // Set before the first build or load (Simulation sets them from its contact laws).
+  void set_layouts(const StateLayout& pairs, const StateLayout& walls);
+  const StateLayout& layout() const { return pair_layout; }
+  const StateLayout& layout_walls() const { return wall_layout; }
+  std::vector<double> hist, wall_hist;
   long builds = 0;
   double skin = 0.0;
   int threads = 1;  // OpenMP threads for building and checking
@@ -81,6 +84,15 @@ class VerletList {
     ContactState s;  // wall: a = particle index, b = wall index
   };
   void attach_history(const ParticleStore& p);
+  static ContactState read(const std::vector<double>& v, int size, std::size_t e) {
+    ContactState s;
+    for (int k = 0; k < size; ++k) s.h[k] = v[e * std::size_t(size) + std::size_t(k)];
+    return s;
+  }
+  static void write(std::vector<double>& v, int size, std::size_t e, const ContactState& s) {
+    for (int k = 0; k < size; ++k) v[e * std::size_t(size) + std::size_t(k)] = s.h[k];
+  }
+  StateLayout pair_layout, wall_layout;
   std::vector<Saved> saved_pairs_, saved_walls_;  // sorted by (a, b)
   bool stashed_ = false;
   std::uint64_t ids_hash_ = 0;  // of the particle ids at the build, in index order

@@ -3,6 +3,8 @@
 //   F_coh = F_L,cg  for surface gap s < s_c (including overlap), else 0;  s_c = range * d_ref.
 // Pull-off work from equilibrium: F s_c + F^2 / (2 k_n) (test T-C5).
 #pragma once
+#include <array>
+
 #include "core/inline.hpp"
 #include "model/contact/cohesion_common.hpp"
 
@@ -12,7 +14,15 @@ struct CohesionConstantRange {
   static constexpr const char* name = "constant-range";
   static constexpr const char* summary = "F_L,cg up to a gap s_c";
 
-  SILODEM_HOT static double kernel(const CohesionParams& p, const ContactGeometry& g) {
+  static constexpr std::array<double, 0> history{};
+  struct Params {
+    double force = 0.0;         // F_L,cg of this pair (after pair rule / wall factor), N
+    double range_over_d = 0.0;  // gap s_c / d_ref
+    double reach_over_d = 0.0;  // = range_over_d
+  };
+
+  SILODEM_HOT static double kernel(const Params& p, const ContactGeometry& g, const NormalForce&,
+                                   double*) {
     return -g.overlap < p.range_over_d * g.d_ref ? p.force : 0.0;
   }
   static std::vector<Field> fields(bool wall) {
@@ -25,12 +35,8 @@ struct CohesionConstantRange {
                             .at_most(1));
     return f;
   }
-  static void configure(const ParamValues& v, const LawContext& ctx, ContactLaw& law) {
-    law.cp = CohesionParams{};
-    law.cp.force = cohesion_pair_force(v, ctx);
-    law.cp.range_over_d = v.number("range");
-    law.cp.reach_over_d = law.cp.range_over_d;
-    law.cohesion = &kernel;
+  static Params configure(const ParamValues& v, const LawContext& ctx) {
+    return {cohesion_pair_force(v, ctx), v.number("range"), v.number("range")};
   }
 };
 

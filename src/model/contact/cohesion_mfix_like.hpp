@@ -5,6 +5,8 @@
 //         = F_L,cg (s_in / s)^2    for s_in < s < s_out
 //         = 0                      beyond s_out;   s_in, s_out given / d_ref.
 #pragma once
+#include <array>
+
 #include "core/inline.hpp"
 #include "model/contact/cohesion_common.hpp"
 
@@ -14,7 +16,16 @@ struct CohesionMfixLike {
   static constexpr const char* name = "mfix-like";
   static constexpr const char* summary = "constant to s_in (incl. overlap), 1/s^2 to s_out";
 
-  SILODEM_HOT static double kernel(const CohesionParams& p, const ContactGeometry& g) {
+  static constexpr std::array<double, 0> history{};
+  struct Params {
+    double force = 0.0;         // F_L,cg of this pair (after pair rule / wall factor), N
+    double inner_over_d = 0.0;  // s_in / d_ref
+    double outer_over_d = 0.0;  // s_out / d_ref
+    double reach_over_d = 0.0;  // = outer_over_d
+  };
+
+  SILODEM_HOT static double kernel(const Params& p, const ContactGeometry& g, const NormalForce&,
+                                   double*) {
     const double s = -g.overlap;
     const double s_in = p.inner_over_d * g.d_ref;
     if (s <= s_in) return p.force;
@@ -30,16 +41,11 @@ struct CohesionMfixLike {
          Field::number("outer", "outer cutoff gap s_out / d_ref").needed().above(0).at_most(1)});
     return f;
   }
-  static void configure(const ParamValues& v, const LawContext& ctx, ContactLaw& law) {
+  static Params configure(const ParamValues& v, const LawContext& ctx) {
     if (v.number("outer") <= v.number("inner"))
       throw v.error("outer",
                     "must be larger than 'inner' (" + std::to_string(v.number("inner")) + ")");
-    law.cp = CohesionParams{};
-    law.cp.force = cohesion_pair_force(v, ctx);
-    law.cp.inner_over_d = v.number("inner");
-    law.cp.outer_over_d = v.number("outer");
-    law.cp.reach_over_d = law.cp.outer_over_d;
-    law.cohesion = &kernel;
+    return {cohesion_pair_force(v, ctx), v.number("inner"), v.number("outer"), v.number("outer")};
   }
 };
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // No cohesion (dry material).
 #pragma once
+#include <array>
+
 #include "core/inline.hpp"
 #include "model/contact/cohesion_common.hpp"
 
@@ -10,14 +12,19 @@ struct CohesionNone {
   static constexpr const char* name = "none";
   static constexpr const char* summary = "dry";
 
-  SILODEM_HOT static double kernel(const CohesionParams&, const ContactGeometry&) { return 0.0; }
+  static constexpr std::array<double, 0> history{};
+  struct Params {
+    double reach_over_d = 0.0;
+  };
+
+  SILODEM_HOT static double kernel(const Params&, const ContactGeometry&, const NormalForce&,
+                                   double*) {
+    return 0.0;
+  }
   // The common keys (pair_rule, wall_factor, factor) are accepted and have no effect, so that a
   // cohesive case can be switched dry with one `--set ...cohesion.law=none`.
   static std::vector<Field> fields(bool wall) { return cohesion_common_fields(wall); }
-  static void configure(const ParamValues&, const LawContext&, ContactLaw& law) {
-    law.cp = CohesionParams{};
-    law.cohesion = &kernel;
-  }
+  static Params configure(const ParamValues&, const LawContext&) { return {}; }
 };
 
 }  // namespace silodem

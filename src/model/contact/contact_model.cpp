@@ -4,14 +4,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/constants.hpp"
 #include "model/contact/dispatch.hpp"
 
 namespace silodem {
 
 ContactLaw configure_contact_law(const ContactSpec& spec, const LawContext& ctx) {
   ContactLaw law;
-  // Order matters: tangential and rolling read k_n from the normal slot.
+  // Slot order: the history values are laid out in it.
   const std::pair<Slot, const SlotChoice*> slots[] = {{Slot::Normal, &spec.normal},
                                                       {Slot::Tangential, &spec.tangential},
                                                       {Slot::Rolling, &spec.rolling},
@@ -20,8 +19,20 @@ ContactLaw configure_contact_law(const ContactSpec& spec, const LawContext& ctx)
     const LawEntry* e = find_law(slot, choice->law);
     if (!e) throw choice->values.error("law", "unknown law '" + choice->law + "'");
     e->configure(choice->values, ctx, law);
-    law.law_names[static_cast<int>(slot)] = choice->law;
-    law.law_index[static_cast<int>(slot)] = e->index;
+    const int s = static_cast<int>(slot);
+    law.law_names[s] = choice->law;
+    law.law_index[s] = e->index;
+    // The state layout, in slot order (dispatch.hpp's HistoryOf computes the same offsets).
+    StateLayout& L = law.layout;
+    if (L.size + e->history > kMaxHistory)
+      throw choice->values.error("law", "the four contact laws keep more than " +
+                                            std::to_string(kMaxHistory) +
+                                            " history values per contact together");
+    L.offset[s] = L.size;
+    L.count[s] = e->history;
+    L.law[s] = choice->law;
+    for (int k = 0; k < e->history; ++k) L.swap[L.size + k] = e->swap[k];
+    L.size += e->history;
   }
   return law;
 }
@@ -42,8 +53,8 @@ ContactModel ContactModel::build(const ContactSpec& pp, const ContactSpec& pw,
     LawContext ctx{&cg, cohesion_cg[a], 0.0, true, &raw};
     m.pw_.push_back(configure_contact_law(pw, ctx));
   }
-  for (const auto& l : m.pp_) m.max_reach_ = std::max(m.max_reach_, l.cp.reach_over_d);
-  for (const auto& l : m.pw_) m.max_reach_ = std::max(m.max_reach_, l.cp.reach_over_d);
+  for (const auto& l : m.pp_) m.max_reach_ = std::max(m.max_reach_, l.reach_over_d);
+  for (const auto& l : m.pw_) m.max_reach_ = std::max(m.max_reach_, l.reach_over_d);
   if (warnings) {
     for (const auto& w : raw)
       if (std::find(warnings->begin(), warnings->end(), w) == warnings->end())
@@ -52,23 +63,43 @@ ContactModel ContactModel::build(const ContactSpec& pp, const ContactSpec& pw,
   return m;
 }
 
-static double t_col(const NormalParams& np, double m_eff) {
-  // Eq. 10 with E3: t_col = pi / sqrt(k/m - eta^2 / (4 m^2)), eta = 2 zeta sqrt(m k)
-  // => t_col = pi / sqrt((k/m)(1 - zeta^2)).
-  return kPi / std::sqrt(np.stiffness / m_eff * (1.0 - np.damping_ratio * np.damping_ratio));
+double normal_elastic_energy(const ContactLaw& law, const ContactGeometry& g,
+                             const ContactState& s) {
+  return with_kernels(law, [&](auto k) {
+    using N = typename decltype(k)::Normal;
+    return N::elastic_energy(law.params<N>(), g, s.h);  // the normal law's values come first
+  });
 }
 
-double ContactModel::pair_collision_time(int a, int b, double m_a, double m_b) const {
-  return t_col(pair(a, b).np, effective_mass(m_a, m_b));
+double normal_collision_time(const ContactLaw& law, double m_eff, double r_eff) {
+  return with_kernels(law, [&](auto k) {
+    using N = typename decltype(k)::Normal;
+    return N::collision_time(law.params<N>(), m_eff, r_eff);
+  });
 }
 
-double ContactModel::wall_collision_time(int a, double m) const {
-  return t_col(wall(a).np, m);
+double normal_damping_coefficient(const ContactLaw& law, double m_eff, double r_eff) {
+  return with_kernels(law, [&](auto k) {
+    using N = typename decltype(k)::Normal;
+    return N::damping_coefficient(law.params<N>(), m_eff, r_eff);
+  });
+}
+
+double ContactModel::pair_collision_time(int a, int b, double m_a, double m_b, double r_a,
+                                         double r_b) const {
+  return normal_collision_time(pair(a, b), effective_mass(m_a, m_b), r_a * r_b / (r_a + r_b));
+}
+
+double ContactModel::wall_collision_time(int a, double m, double r) const {
+  return normal_collision_time(wall(a), m, r);
 }
 
 ContactResult evaluate_contact(const ContactLaw& law, const ContactGeometry& g, ContactState& s,
                                double dt) {
-  return with_kernels(law, [&](auto k) { return evaluate<decltype(k)>(law, g, s, dt); });
+  return with_kernels(law, [&](auto k) {
+    using K = decltype(k);
+    return evaluate<K>(typed_params<K>(law), g, s, dt);
+  });
 }
 
 }  // namespace silodem

@@ -2,11 +2,13 @@
 // The contact model of a run: one ContactLaw per coal pair and per coal-wall pair, built from the
 // four chosen slot laws, and the evaluation of one contact (the body of the force loop).
 #pragma once
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "model/coarse_graining.hpp"
 #include "model/contact/contact_history.hpp"
+#include "model/contact/laws.hpp"
 #include "model/contact/registry.hpp"
 
 namespace silodem {
@@ -19,6 +21,51 @@ struct SlotChoice {
 // The case file's [contact.particle_particle] or [contact.particle_wall].
 struct ContactSpec {
   SlotChoice normal, tangential, rolling, cohesion;
+};
+
+// One law per slot for one kind of pair (coal a - coal b, or coal a - wall): each law's own
+// Params, and where its per-contact values sit.
+struct ContactLaw {
+  SlotParams<NormalLaws> normal;
+  SlotParams<TangentialLaws> tangential;
+  SlotParams<RollingLaws> rolling;
+  SlotParams<CohesionLaws> cohesion;
+  double reach_over_d = 0.0;        // the cohesion law's: largest gap / d_ref at which it acts
+  StateLayout layout;               // the four laws' history values, in slot order
+  std::string law_names[4];         // by Slot, for reports
+  int law_index[4] = {0, 0, 0, 0};  // by Slot: position of the law in its list (laws.hpp)
+
+  // The Params of Law, which must be the law chosen for its slot (else std::logic_error).
+  template <class Law>
+  const typename Law::Params& params() const {
+    const auto* p = std::get_if<IndexInList<Law, List<Law>>::value>(&slot<Law>(*this));
+    if (!p)
+      throw std::logic_error(std::string("ContactLaw: the law of this slot is not ") + Law::name);
+    return *p;
+  }
+  template <class Law>
+  void set_params(const typename Law::Params& p) {
+    slot<Law>(*this).template emplace<IndexInList<Law, List<Law>>::value>(p);
+  }
+
+ private:
+  template <class Law>
+  using List =
+      std::conditional_t<Law::slot == Slot::Normal, NormalLaws,
+                         std::conditional_t<Law::slot == Slot::Tangential, TangentialLaws,
+                                            std::conditional_t<Law::slot == Slot::Rolling,
+                                                               RollingLaws, CohesionLaws>>>;
+  template <class Law, class Self>
+  static auto& slot(Self& self) {
+    if constexpr (Law::slot == Slot::Normal)
+      return self.normal;
+    else if constexpr (Law::slot == Slot::Tangential)
+      return self.tangential;
+    else if constexpr (Law::slot == Slot::Rolling)
+      return self.rolling;
+    else
+      return self.cohesion;
+  }
 };
 
 struct ContactResult {
@@ -41,9 +88,10 @@ class ContactModel {
   const ContactLaw& wall(int a) const { return pw_[a]; }
   // Largest reach of any cohesion law beyond contact, as a fraction of d_ref.
   double max_reach_over_d() const { return max_reach_; }
-  // Collision time of a pair / of a particle against a wall (Eq. 10 with E3).
-  double pair_collision_time(int a, int b, double m_a, double m_b) const;
-  double wall_collision_time(int a, double m) const;
+  // Collision time of a pair / of a particle against a wall, from the normal law (Eq. 10 with E3
+  // for the linear law); the radii matter to a Hertz law.
+  double pair_collision_time(int a, int b, double m_a, double m_b, double r_a, double r_b) const;
+  double wall_collision_time(int a, double m, double r) const;
 
  private:
   int n_ = 0;
@@ -55,6 +103,13 @@ class ContactModel {
 // calls evaluate<K> directly.
 ContactResult evaluate_contact(const ContactLaw& law, const ContactGeometry& g, ContactState& s,
                                double dt);
+
+// What the normal law of `law` says of a contact: its elastic energy, and for reports its
+// collision time and damping coefficient for a pair of effective mass and radius m_eff, r_eff.
+double normal_elastic_energy(const ContactLaw& law, const ContactGeometry& g,
+                             const ContactState& s);
+double normal_collision_time(const ContactLaw& law, double m_eff, double r_eff);
+double normal_damping_coefficient(const ContactLaw& law, double m_eff, double r_eff);
 
 // Configure a full ContactLaw for one pair kind (used by build() and by tests).
 ContactLaw configure_contact_law(const ContactSpec& spec, const LawContext& ctx);

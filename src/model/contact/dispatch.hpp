@@ -54,30 +54,55 @@ decltype(auto) with_kernels(const ContactLaw& law, F&& f) {
   });
 }
 
+// The numbers of the four laws of K, each law's own Params: what the force loop reads, copied
+// out of a ContactLaw once (typed_params) so that nothing in the loop looks into a variant.
+template <class K>
+struct LawParamsOf {
+  typename K::Normal::Params n;
+  typename K::Tangential::Params t;
+  typename K::Rolling::Params r;
+  typename K::Cohesion::Params c;
+};
+template <class K>
+LawParamsOf<K> typed_params(const ContactLaw& law) {
+  return {law.params<typename K::Normal>(), law.params<typename K::Tangential>(),
+          law.params<typename K::Rolling>(), law.params<typename K::Cohesion>()};
+}
+
+// Where each slot's history values sit in a contact's state (slot order, as StateLayout).
+template <class K>
+struct HistoryOf {
+  static constexpr int normal = 0;
+  static constexpr int tangential = normal + history_size<typename K::Normal>;
+  static constexpr int rolling = tangential + history_size<typename K::Tangential>;
+  static constexpr int cohesion = rolling + history_size<typename K::Rolling>;
+  static constexpr int size = cohesion + history_size<typename K::Cohesion>;
+  static_assert(size <= kMaxHistory, "the four laws keep more history than kMaxHistory");
+};
+
 // One contact: all four slots, combined as PHYSICS.md 2-3 say. Clears the history when the
-// surfaces do not touch (history lives as long as the contact). Law: anything with the four
-// parameter blocks np, tp, rp, cp (a ContactLaw, or the plain LawParams of the lane loop).
-template <class K, class Law>
-SILODEM_HOT ContactResult evaluate(const Law& law, const ContactGeometry& g, ContactState& s,
-                                   double dt) {
+// surfaces do not touch (history lives as long as the contact).
+template <class K>
+SILODEM_HOT ContactResult evaluate(const LawParamsOf<K>& p, const ContactGeometry& g,
+                                   ContactState& s, double dt) {
+  using H = HistoryOf<K>;
   ContactResult r;
-  r.cohesion = K::Cohesion::kernel(law.cp, g);
   if (g.overlap <= 0.0) {
     // Not touching: only a ranged cohesion acts; the contact (and its history) has ended.
-    s = ContactState{};
+    r.cohesion = K::Cohesion::kernel(p.c, g, NormalForce{}, s.h + H::cohesion);
+    for (int k = 0; k < H::size; ++k) s.h[k] = 0.0;
     r.force_i = -r.cohesion * g.n;
     return r;
   }
   r.touching = true;
-  const NormalForce fn = K::Normal::kernel(law.np, g);
+  const NormalForce fn = K::Normal::kernel(p.n, g, s.h + H::normal);
+  r.cohesion = K::Cohesion::kernel(p.c, g, fn, s.h + H::cohesion);
   r.normal = fn.total;
-  const double cap =
-      law.tp.cap_sees_cohesion ? std::max(0.0, fn.total - r.cohesion) : std::fabs(fn.total);
-  const Vec3 ft = K::Tangential::kernel(law.tp, g, fn.eta, cap, s.tangential, dt);
+  const Vec3 ft = K::Tangential::kernel(p.t, g, fn, r.cohesion, s.h + H::tangential, dt);
   // Torque of the tangential force about each centre: r x F with r = -arm_i n (on i) and
   // r = +arm_j n with force -F_t (on j); both equal -arm (n x F_t).
   const Vec3 nxf = cross(g.n, ft);
-  const RollingTorque rt = K::Rolling::kernel(law.rp, g, law.np, fn, r.cohesion, s.rolling, dt);
+  const RollingTorque rt = K::Rolling::kernel(p.r, g, fn, r.cohesion, s.h + H::rolling, dt);
   r.torque_i = -g.arm_i * nxf + rt.on_i;
   r.torque_j = -g.arm_j * nxf + rt.on_j;
   r.force_i = (fn.total - r.cohesion) * g.n + ft;

@@ -2,16 +2,24 @@
 // The table of contact laws, built from the lists in laws.hpp.
 #include "model/contact/registry.hpp"
 
+#include "model/contact/contact_model.hpp"
 #include "model/contact/laws.hpp"
 
 namespace silodem {
 namespace {
 
+template <class Law>
+void configure_law(const ParamValues& v, const LawContext& ctx, ContactLaw& law) {
+  const typename Law::Params p = Law::configure(v, ctx);
+  law.set_params<Law>(p);
+  if constexpr (Law::slot == Slot::Cohesion) law.reach_over_d = p.reach_over_d;
+}
+
 template <class... Laws>
 void append(std::vector<LawEntry>& table, LawList<Laws...>) {
   int index = 0;
-  ((table.push_back(
-       {Laws::name, Laws::slot, Laws::summary, &Laws::fields, &Laws::configure, index++})),
+  ((table.push_back({Laws::name, Laws::slot, Laws::summary, &Laws::fields, &configure_law<Laws>,
+                     history_size<Laws>, Laws::history.data(), index++})),
    ...);
 }
 

@@ -14,20 +14,7 @@ namespace silodem {
 enum class Slot { Normal, Tangential, Rolling, Cohesion };
 const char* slot_name(Slot s);
 
-// One law per slot for one kind of pair (coal a - coal b, or coal a - wall).
-struct ContactLaw {
-  NormalKernel normal = nullptr;
-  NormalParams np;
-  TangentialKernel tangential = nullptr;
-  TangentialParams tp;
-  RollingKernel rolling = nullptr;
-  RollingParams rp;
-  CohesionKernel cohesion = nullptr;
-  CohesionParams cp;
-  bool rolling_spring = false;      // the rolling law keeps a spring in the contact history
-  std::string law_names[4];         // by Slot, for reports
-  int law_index[4] = {0, 0, 0, 0};  // by Slot: position of the law in its list (laws.hpp)
-};
+struct ContactLaw;  // contact_model.hpp: the four configured laws of one pair kind
 
 // What a law may know when it is configured for one pair kind.
 struct LawContext {
@@ -43,8 +30,11 @@ struct LawEntry {
   Slot slot;
   const char* summary;  // one line for docs and `check`
   std::vector<Field> (*fields)(bool wall);
-  // Checks the validated values against each other and fills the slot of `law`.
+  // Checks the validated values against each other and puts the law's Params into its slot of
+  // `law` (registry.cpp, from the law's own `configure`).
   void (*configure)(const ParamValues& values, const LawContext& ctx, ContactLaw& law);
+  int history;         // values the law keeps per contact
+  const double* swap;  // their factors when i and j swap (`history` of them)
   int index;  // position in its slot's list (laws.hpp); selects the compiled kernel (dispatch.hpp)
 };
 

@@ -8,6 +8,7 @@
 // Unlike constant-torque laws it holds a sphere at rest without creep or chatter.
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/inline.hpp"
@@ -20,11 +21,22 @@ struct RollingEpsd {
   static constexpr const char* name = "epsd";
   static constexpr const char* summary = "elastic-plastic spring-dashpot (Ai et al. 2011 type C)";
 
-  SILODEM_HOT static RollingTorque kernel(const RollingParams& p, const ContactGeometry& g,
-                                          const NormalParams& np, const NormalForce& fn,
-                                          double cohesion, Vec3& spring, double dt) {
+  // The elastic rolling torque M_k on i, a vector in the tangent plane: -1 when i and j swap.
+  static constexpr std::array<double, 3> history{-1.0, -1.0, -1.0};
+  struct Params {
+    double friction = 0.0;             // mu_r
+    double stiffness_factor = 2.25;    // k_r = factor k_n mu_r^2 R_eff^2 (Ai et al. 2011)
+    double damping_fraction = 0.3;     // eta_r, fraction of critical rolling damping
+    bool limit_sees_cohesion = false;  // limit on |F_n - F_coh| instead of |F_n|
+  };
+
+  SILODEM_HOT static RollingTorque kernel(const Params& p, const ContactGeometry& g,
+                                          const NormalForce& fn, double cohesion, double* h,
+                                          double dt) {
+    // k_n: the normal law's contact stiffness at this overlap (the spring constant if linear).
     const double k_r =
-        p.stiffness_factor * np.stiffness * p.friction * p.friction * g.r_eff * g.r_eff;
+        p.stiffness_factor * fn.stiffness * p.friction * p.friction * g.r_eff * g.r_eff;
+    Vec3 spring{h[0], h[1], h[2]};
     Vec3 w = g.omega_i - g.omega_j;
     w -= dot(w, g.n) * g.n;
     rotate_into_tangent_plane(spring, g.n);
@@ -42,6 +54,7 @@ struct RollingEpsd {
       const double c_r = p.damping_fraction * 2.0 * std::sqrt(rolling_inertia(g) * k_r);
       torque = spring - c_r * w;
     }
+    h[0] = spring.x, h[1] = spring.y, h[2] = spring.z;
     return {torque, -torque};
   }
 
@@ -67,13 +80,9 @@ struct RollingEpsd {
     };
   }
 
-  static void configure(const ParamValues& v, const LawContext&, ContactLaw& law) {
-    law.rp.friction = v.number("friction");
-    law.rp.stiffness_factor = v.number("stiffness_factor");
-    law.rp.damping_fraction = v.number("damping_ratio");
-    law.rp.limit_sees_cohesion = v.flag("limit_sees_cohesion");
-    law.rolling = &kernel;
-    law.rolling_spring = true;
+  static Params configure(const ParamValues& v, const LawContext&) {
+    return {v.number("friction"), v.number("stiffness_factor"), v.number("damping_ratio"),
+            v.flag("limit_sees_cohesion")};
   }
 };
 

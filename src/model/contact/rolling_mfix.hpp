@@ -12,6 +12,7 @@
 // (the summed coefficient stays below 2 I / dt).
 #pragma once
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/inline.hpp"
@@ -36,10 +37,15 @@ struct RollingMfix {
     return omega * a;
   }
 
-  SILODEM_HOT static RollingTorque kernel(const RollingParams& p, const ContactGeometry& g,
-                                          const NormalParams& np, const NormalForce&, double, Vec3&,
-                                          double dt) {
-    const double elastic = np.stiffness * g.overlap;  // k_n delta_n, elastic part only
+  static constexpr std::array<double, 0> history{};
+  struct Params {
+    double friction = 0.0;   // mu_r
+    bool regularize = true;  // smooth the sign(omega) switch near omega = 0
+  };
+
+  SILODEM_HOT static RollingTorque kernel(const Params& p, const ContactGeometry& g,
+                                          const NormalForce& fn, double, double*, double dt) {
+    const double elastic = fn.elastic;  // k_n delta_n, elastic part only
     RollingTorque t;
     t.on_i = oppose(g.omega_i, p.friction * g.d_i * elastic, g.inertia_i, g.inv_inertia_i,
                     p.regularize, dt);
@@ -61,10 +67,8 @@ struct RollingMfix {
                     true)};
   }
 
-  static void configure(const ParamValues& v, const LawContext&, ContactLaw& law) {
-    law.rp.friction = v.number("friction");
-    law.rp.regularize = v.flag("regularize");
-    law.rolling = &kernel;
+  static Params configure(const ParamValues& v, const LawContext&) {
+    return {v.number("friction"), v.flag("regularize")};
   }
 };
 

@@ -11,6 +11,8 @@
 // contact whatever L is, and stays stable with up to 20 contacts even for L = 0.6 m (the paper's
 // mu_r read literally in MFiX 21.3), where T is a hundred times that of `mfix` at mu_r = 0.6.
 #pragma once
+#include <array>
+
 #include "core/inline.hpp"
 #include "model/contact/registry.hpp"
 #include "model/contact/rolling_mfix.hpp"
@@ -22,11 +24,16 @@ struct RollingMfix21 {
   static constexpr const char* summary =
       "MFiX 21.3: torque L k_n delta_n against each particle's own spin, no diameter (E10)";
 
-  SILODEM_HOT static RollingTorque kernel(const RollingParams& p, const ContactGeometry& g,
-                                          const NormalParams& np, const NormalForce&, double, Vec3&,
-                                          double dt) {
+  static constexpr std::array<double, 0> history{};
+  struct Params {
+    double length = 0.0;     // L = MFiX 21.3's MEW_R, a length (m)
+    bool regularize = true;  // as RollingMfix's
+  };
+
+  SILODEM_HOT static RollingTorque kernel(const Params& p, const ContactGeometry& g,
+                                          const NormalForce& fn, double, double*, double dt) {
     // L k_n delta_n, elastic part only, the same on both particles (no d_i, d_j)
-    const double magnitude = p.length * np.stiffness * g.overlap;
+    const double magnitude = p.length * fn.elastic;
     RollingTorque t;
     t.on_i =
         RollingMfix::oppose(g.omega_i, magnitude, g.inertia_i, g.inv_inertia_i, p.regularize, dt);
@@ -51,10 +58,8 @@ struct RollingMfix21 {
                     true)};
   }
 
-  static void configure(const ParamValues& v, const LawContext&, ContactLaw& law) {
-    law.rp.length = v.number("length_m");
-    law.rp.regularize = v.flag("regularize");
-    law.rolling = &kernel;
+  static Params configure(const ParamValues& v, const LawContext&) {
+    return {v.number("length_m"), v.flag("regularize")};
   }
 };
 

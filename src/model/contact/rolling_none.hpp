@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // No rolling resistance.
 #pragma once
+#include <array>
+
 #include "core/inline.hpp"
 #include "model/contact/registry.hpp"
 
@@ -10,16 +12,15 @@ struct RollingNone {
   static constexpr const char* name = "none";
   static constexpr const char* summary = "no rolling resistance";
 
-  SILODEM_HOT static RollingTorque kernel(const RollingParams&, const ContactGeometry&,
-                                          const NormalParams&, const NormalForce&, double,
-                                          Vec3& spring, double) {
-    spring = Vec3{};
+  static constexpr std::array<double, 0> history{};
+  struct Params {};
+
+  SILODEM_HOT static RollingTorque kernel(const Params&, const ContactGeometry&, const NormalForce&,
+                                          double, double*, double) {
     return {};
   }
   static std::vector<Field> fields(bool) { return {}; }
-  static void configure(const ParamValues&, const LawContext&, ContactLaw& law) {
-    law.rolling = &kernel;
-  }
+  static Params configure(const ParamValues&, const LawContext&) { return {}; }
 };
 
 }  // namespace silodem

@@ -3,12 +3,15 @@
 // This file is the reference example of a contact law: checked parameters, a pure kernel, and
 // the equation cited where it is implemented.
 //   spring  xi <- rotate(xi) + v_t dt            (accumulated tangential displacement)
-//   F_t     = -k_t xi - eta_t v_t,  eta_t = (eta_t/eta_n) eta_n   (MFIX default 0.5)
+//   F_t     = -k_t xi - eta_t v_t,  eta_t = (eta_t/eta_n) eta_n   (MFIX default 0.5),
+//             k_t = (k_t/k_n) k_n, k_n the normal law's contact stiffness (MFIX default 2/7)
 //   |F_t|  <= mu_s F_n, F_n = |elastic + damping normal force| (MFIX); with cap_sees_cohesion the
 //             cap uses the net compressive force max(0, F_n - F_coh) instead.
 //   on slip F_t = mu_s F_n along the trial force and the spring is reset to the cap, xi = -F_t/k_t
 //             (PHYSICS.md E6: "resets the spring to mu |FN| / kt on slip").
 #pragma once
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/inline.hpp"
@@ -22,18 +25,35 @@ struct TangentialLinearHistory {
   static constexpr const char* summary =
       "spring with history + dashpot, Coulomb cap (Eq. 8; E6 as MFIX)";
 
-  SILODEM_HOT static Vec3 kernel(const TangentialParams& p, const ContactGeometry& g, double eta_n,
-                                 double cap_force, Vec3& spring, double dt) {
+  // The spring xi, a vector in the tangent plane; -1 when i and j swap (it is i's).
+  static constexpr std::array<double, 3> history{-1.0, -1.0, -1.0};
+
+  struct Params {
+    double stiffness_ratio = 0.0;    // k_t / k_n, k_n the normal law's contact stiffness
+    double damping_fraction = 0.0;   // eta_t / eta_n
+    double friction = 0.0;           // mu_s
+    bool cap_sees_cohesion = false;  // Coulomb cap on |F_el + F_damp - F_coh|, not |F_el + F_damp|
+  };
+
+  SILODEM_HOT static Vec3 kernel(const Params& p, const ContactGeometry& g, const NormalForce& fn,
+                                 double cohesion, double* h, double dt) {
+    const double cap_force =
+        p.cap_sees_cohesion ? std::max(0.0, fn.total - cohesion) : std::fabs(fn.total);
+    // k_t = (k_t / k_n) k_n with k_n = d F_el / d delta_n of the normal law at this overlap: the
+    // normal spring constant of the linear law; for a Hertz law it grows as sqrt(delta_n).
+    const double k_t = p.stiffness_ratio * fn.stiffness;
+    Vec3 spring{h[0], h[1], h[2]};
     rotate_into_tangent_plane(spring, g.n);
     spring += g.v_t * dt;
-    const double eta_t = p.damping_fraction * eta_n;
-    Vec3 f = -p.stiffness * spring - eta_t * g.v_t;  // Eq. 8, trial force
+    const double eta_t = p.damping_fraction * fn.eta;
+    Vec3 f = -k_t * spring - eta_t * g.v_t;  // Eq. 8, trial force
     const double f2 = norm2(f);
     const double cap = p.friction * cap_force;  // Eq. 8 (Coulomb)
     if (f2 > cap * cap) {
       f *= cap / std::sqrt(f2);
-      spring = f * (-1.0 / p.stiffness);
+      spring = f * (-1.0 / k_t);
     }
+    h[0] = spring.x, h[1] = spring.y, h[2] = spring.z;
     return f;
   }
 
@@ -58,13 +78,13 @@ struct TangentialLinearHistory {
     };
   }
 
-  static void configure(const ParamValues& v, const LawContext&, ContactLaw& law) {
-    // k_t needs k_n: the normal slot is configured first (contact_model.cpp).
-    law.tp.stiffness = v.number("stiffness_ratio") * law.np.stiffness;
-    law.tp.damping_fraction = v.number("damping_ratio");
-    law.tp.friction = v.number("friction");
-    law.tp.cap_sees_cohesion = v.flag("cap_sees_cohesion");
-    law.tangential = &kernel;
+  static Params configure(const ParamValues& v, const LawContext&) {
+    Params p;
+    p.stiffness_ratio = v.number("stiffness_ratio");
+    p.damping_fraction = v.number("damping_ratio");
+    p.friction = v.number("friction");
+    p.cap_sees_cohesion = v.flag("cap_sees_cohesion");
+    return p;
   }
 };
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // No tangential force (frictionless contacts).
 #pragma once
+#include <array>
+
 #include "core/inline.hpp"
 #include "model/contact/registry.hpp"
 
@@ -10,15 +12,15 @@ struct TangentialNone {
   static constexpr const char* name = "none";
   static constexpr const char* summary = "frictionless";
 
-  SILODEM_HOT static Vec3 kernel(const TangentialParams&, const ContactGeometry&, double, double,
-                                 Vec3& spring, double) {
-    spring = Vec3{};
+  static constexpr std::array<double, 0> history{};
+  struct Params {};
+
+  SILODEM_HOT static Vec3 kernel(const Params&, const ContactGeometry&, const NormalForce&, double,
+                                 double*, double) {
     return {};
   }
   static std::vector<Field> fields(bool) { return {}; }
-  static void configure(const ParamValues&, const LawContext&, ContactLaw& law) {
-    law.tangential = &kernel;
-  }
+  static Params configure(const ParamValues&, const LawContext&) { return {}; }
 };
 
 }  // namespace silodem

@@ -106,7 +106,7 @@ Loaded loaded_pair(bool rebuild, bool remove_far, bool with_far, bool reorder = 
   bool flipped = false;
   const std::optional<ContactState> st = sim.contact_state(a, b, &flipped);
   Loaded out;
-  if (st) out.spring = flipped ? -st->tangential : st->tangential;
+  if (st) out.spring = flipped ? -st->vec(0) : st->vec(0);  // the tangential spring comes first
   out.xa = p.x[p.index_of(a)];
   out.xb = p.x[p.index_of(b)];
   return out;
@@ -193,7 +193,7 @@ TEST(ContactHistory, EndsWhenTheContactEnds) {
   bool flipped = false;
   const std::optional<ContactState> loaded = sim.contact_state(sp.a, sp.b, &flipped);
   ASSERT_TRUE(loaded);
-  ASSERT_GT(norm(loaded->tangential), 0.0);
+  ASSERT_GT(norm(loaded->vec(0)), 0.0);
   const long builds = sim.neighbors().builds;
   const std::size_t ib = std::size_t(p.index_of(sp.b));
   p.x[ib] = {2e-3 + 1e-4, p.x[ib].y, 0};
@@ -203,7 +203,7 @@ TEST(ContactHistory, EndsWhenTheContactEnds) {
   EXPECT_EQ(sim.neighbors().builds, builds);  // the pair loop's doing, not a rebuild's
   const std::optional<ContactState> ended = sim.contact_state(sp.a, sp.b, &flipped);
   ASSERT_TRUE(ended);  // still listed
-  EXPECT_EQ(norm(ended->tangential), 0.0);
+  EXPECT_EQ(norm(ended->vec(0)), 0.0);
 }
 
 TEST(ContactHistory, SurvivesMortonReorder) {
@@ -256,9 +256,29 @@ namespace silodem {
 // are made from the ids, so a state attached to the wrong pair, or with the wrong sign, shows.
 namespace {
 
+// The history of a run with the tangential spring alone (3 values), or with a rolling spring
+// and a scalar besides (7 values: the scalar, like a largest load, keeps its sign on a swap).
+StateLayout layout_of(bool springs) {
+  StateLayout l;
+  l.size = springs ? 7 : 3;
+  l.offset[1] = 0, l.count[1] = 3, l.law[1] = "linear_history";
+  if (springs) {
+    l.offset[2] = 3, l.count[2] = 3, l.law[2] = "epsd";
+    l.offset[3] = 6, l.count[3] = 1, l.law[3] = "a-scalar";
+  }
+  for (int k = 0; k < l.size; ++k) l.swap[k] = k == 6 ? 1.0 : -1.0;
+  return l;
+}
+
 ContactState state_of(std::uint64_t lo, std::uint64_t hi) {  // oriented "lo relative to hi"
   const double a = double(lo) + 1.0, b = double(hi) + 1.0;
-  return {{a, -b, a * b}, {b, a, -a - b}};
+  return {{a, -b, a * b, b, a, -a - b, a + 2 * b}};
+}
+// What the layout keeps of a state (the values beyond its size read as zero).
+ContactState kept_of(const ContactState& s, const StateLayout& l) {
+  ContactState o;
+  for (int k = 0; k < l.size; ++k) o.h[k] = s.h[k];
+  return o;
 }
 
 // Puts state_of(ids) on every listed pair (oriented by index order) and on every wall candidate.
@@ -267,7 +287,7 @@ void load_states(VerletList& list, const ParticleStore& p) {
     for (int e = list.offset[i]; e < list.offset[i + 1]; ++e) {
       const std::uint64_t a = p.id[i], b = p.id[std::size_t(list.partner[e])];
       const ContactState s = state_of(std::min(a, b), std::max(a, b));
-      list.set_state(std::size_t(e), a < b ? s : ContactState{-s.tangential, -s.rolling});
+      list.set_state(std::size_t(e), a < b ? s : list.layout().swapped(s));
     }
     for (int e = list.wall_offset[i]; e < list.wall_offset[i + 1]; ++e)
       list.set_wall_state(std::size_t(e), state_of(p.id[i], 1000000 + std::uint64_t(list.wall[e])));
@@ -281,7 +301,6 @@ bool same(const ContactState& a, const ContactState& b);
 std::pair<std::size_t, std::size_t> check_states(
     const VerletList& list, const ParticleStore& p,
     const std::set<std::pair<std::uint64_t, std::uint64_t>>& before) {
-  const bool springs = list.rolling_springs;  // without, the rolling part reads as zero
   std::size_t right = 0, kept = 0;
   for (std::size_t i = 0; i + 1 < list.offset.size(); ++i)
     for (int e = list.offset[i]; e < list.offset[i + 1]; ++e) {
@@ -290,8 +309,7 @@ std::pair<std::size_t, std::size_t> check_states(
       ContactState want{};
       if (old) {
         const ContactState s = state_of(std::min(a, b), std::max(a, b));
-        want = a < b ? s : ContactState{-s.tangential, -s.rolling};
-        if (!springs) want.rolling = Vec3{};
+        want = kept_of(a < b ? s : list.layout().swapped(s), list.layout());
         ++kept;
       }
       right += same(list.state(std::size_t(e)), want) ? 1 : 0;
@@ -315,9 +333,9 @@ std::set<std::pair<std::uint64_t, std::uint64_t>> listed_ids(const VerletList& l
 }
 
 bool same(const ContactState& a, const ContactState& b) {
-  return a.tangential.x == b.tangential.x && a.tangential.y == b.tangential.y &&
-         a.tangential.z == b.tangential.z && a.rolling.x == b.rolling.x &&
-         a.rolling.y == b.rolling.y && a.rolling.z == b.rolling.z;
+  for (int k = 0; k < kMaxHistory; ++k)
+    if (a.h[k] != b.h[k]) return false;
+  return true;
 }
 
 // The wall candidates whose state is wrong (state_of(id, wall) if a candidate before, else 0).
@@ -327,8 +345,9 @@ std::size_t wrong_walls(const VerletList& list, const ParticleStore& p,
   for (std::size_t i = 0; i + 1 < list.offset.size(); ++i)
     for (int e = list.wall_offset[i]; e < list.wall_offset[i + 1]; ++e) {
       const std::uint64_t w = 1000000 + std::uint64_t(list.wall[e]);
-      ContactState want = before.count({p.id[i], w}) ? state_of(p.id[i], w) : ContactState{};
-      if (!list.rolling_springs) want.rolling = Vec3{};
+      const ContactState want = before.count({p.id[i], w})
+                                    ? kept_of(state_of(p.id[i], w), list.layout_walls())
+                                    : ContactState{};
       wrong += same(list.wall_state(std::size_t(e)), want) ? 0 : 1;
     }
   return wrong;
@@ -337,7 +356,7 @@ std::size_t wrong_walls(const VerletList& list, const ParticleStore& p,
 }  // namespace
 
 TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
-  for (int threads : {1, 2, 3, -1}) {  // -1: one thread, without rolling springs
+  for (int threads : {1, 2, 3, -1}) {  // -1: one thread, with the tangential spring alone
     ParticleStore p;
     Random rng(11);
     for (int i = 0; i < 3000; ++i)
@@ -345,13 +364,13 @@ TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
             rng.uniform(1e-3, 2e-3), 1e-5, 0);
     VerletList list;
     list.threads = std::max(threads, 1);
-    list.rolling_springs = threads > 0;
+    list.set_layouts(layout_of(threads > 0), layout_of(threads > 0));
     WallList none;  // two walls that about a tenth of the particles touch
     none.push_back(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{0, 0, 1}));
     none.push_back(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{1, 0, 0}));
     list.build(p, none, 4e-4, 0.05);
     EXPECT_GT(list.wall.size(), 200u);
-    EXPECT_EQ(list.roll.size(), threads > 0 ? list.partner.size() : 0u);
+    EXPECT_EQ(list.hist.size(), list.partner.size() * (threads > 0 ? 7u : 3u));
     // 1. A rebuild after the particles moved a little: pairs come and go.
     load_states(list, p);
     auto before = listed_ids(list, p);
@@ -391,7 +410,7 @@ TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
       EXPECT_FALSE(list.needs_rebuild(p));
       VerletList fresh;
       fresh.threads = list.threads;
-      fresh.rolling_springs = list.rolling_springs;
+      fresh.set_layouts(list.layout(), list.layout_walls());
       fresh.build(p, none, 4e-4, 0.05);
       EXPECT_EQ(list.offset, fresh.offset) << threads << " threads, compacted";
       EXPECT_EQ(list.partner, fresh.partner) << threads << " threads, compacted";
@@ -457,6 +476,78 @@ TEST(ContactHistory, ManyContactsSurviveRemovalReorderAndRebuildsByIndex) {
     EXPECT_EQ(wrong_walls(list, p, before), 0u) << threads << " threads, after reversing";
     EXPECT_EQ(kept, list.partner.size());  // nothing moved: the same pairs
   }
+}
+
+// A checkpoint names the law that kept each slot's history: a run with the same laws gets every
+// value back, a run whose rolling law changed keeps the tangential springs and starts the
+// rolling history from zero, and a run with a history the file does not have starts it at zero.
+TEST(ContactHistory, CheckpointKeepsTheValuesOfTheLawsThatStayed) {
+  ParticleStore p;
+  for (int i = 0; i < 4; ++i) p.add({0.0019 * i, 0, 0}, {}, {}, 1e-3, 1e-5, 0);
+  WallList walls;
+  walls.push_back(std::make_unique<PlaneWall>(Vec3{-1e-3, 0, 0}, Vec3{1, 0, 0}));
+  VerletList list;
+  list.set_layouts(layout_of(true), layout_of(true));
+  list.build(p, walls, 5e-4, 0.0);
+  ASSERT_EQ(list.partner.size(), 3u);
+  ASSERT_EQ(list.wall.size(), 1u);
+  load_states(list, p);
+  ByteWriter w;
+  list.save(w);
+  auto load_as = [&](const StateLayout& l) {
+    VerletList back;
+    back.set_layouts(l, l);
+    ByteReader r(w.bytes());
+    back.load(r);
+    EXPECT_TRUE(r.done());
+    return back;
+  };
+  const VerletList same_laws = load_as(layout_of(true));
+  EXPECT_EQ(same_laws.hist, list.hist);
+  EXPECT_EQ(same_laws.wall_hist, list.wall_hist);
+  StateLayout other = layout_of(true);
+  other.law[int(Slot::Rolling)] = "another-rolling-law";
+  const VerletList changed = load_as(other);
+  for (std::size_t e = 0; e < 3; ++e) {
+    const ContactState a = list.state(e), b = changed.state(e);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(b.h[k], a.h[k]) << "tangential " << k;
+    for (int k = 3; k < 6; ++k) EXPECT_EQ(b.h[k], 0.0) << "rolling " << k;
+    EXPECT_EQ(b.h[6], a.h[6]);  // the scalar's law stayed
+  }
+  const VerletList fewer = load_as(layout_of(false));
+  ASSERT_EQ(fewer.hist.size(), 9u);
+  for (std::size_t e = 0; e < 3; ++e)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(fewer.state(e).h[k], list.state(e).h[k]);
+}
+
+// Checkpoints from before the laws declared their history hold a tangential and a rolling spring
+// per entry (tag LIST); they load into linear_history's and epsd's values.
+TEST(ContactHistory, LoadsTheCheckpointsOfBefore) {
+  struct Old {
+    Vec3 tangential, rolling;
+  };
+  struct OldStash {
+    std::uint64_t a, b;
+    Old s;
+  };
+  const std::vector<int> offset{0, 1, 1}, partner{1}, wall_offset{0, 1, 1}, wall{0};
+  ByteWriter w;
+  w.tag("LIST");
+  w.put(offset), w.put(partner), w.put(std::vector<Old>{{{1, 2, 3}, {4, 5, 6}}});
+  w.put(wall_offset), w.put(wall), w.put(std::vector<Old>{{{7, 8, 9}, {10, 11, 12}}});
+  w.put(long(5)), w.put(4e-4), w.put(std::vector<Vec3>{{0, 0, 0}, {1e-3, 0, 0}});
+  w.put(std::uint8_t(0)), w.put(std::vector<OldStash>{}), w.put(std::vector<OldStash>{});
+  VerletList list;
+  list.set_layouts(layout_of(true), layout_of(false));
+  ByteReader r(w.bytes());
+  list.load(r);
+  EXPECT_TRUE(r.done());
+  EXPECT_EQ(list.builds, 5);
+  const ContactState s = list.state(0), ws = list.wall_state(0);
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(s.h[k], k + 1.0);
+  EXPECT_EQ(s.h[6], 0.0);  // a value the old files never had
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(ws.h[k], k + 7.0);
+  EXPECT_EQ(list.wall_hist.size(), 3u);  // the walls keep the tangential spring alone
 }
 
 TEST(ParticleStore, RemoveAllSaysWhereEachParticleWent) {

@@ -55,7 +55,7 @@ OneSphere one_sphere(const Vec3& x, const Vec3& v, bool valve) {
   l.normal_p = {{"stiffness", o.kn}, {"restitution", 0.3}};
   ContactModel model = test::model_of(l);
   SimulationSettings s;
-  s.dt = model.wall_collision_time(0, o.m) / 50;
+  s.dt = model.wall_collision_time(0, o.m, o.r) / 50;
   s.threads = 1;
   o.sim = std::make_unique<Simulation>(std::move(model), s);
   SiloWalls w = make_silo_walls(SiloGeometry{});

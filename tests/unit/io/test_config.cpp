@@ -88,7 +88,7 @@ TEST(Config, Mfix21RollingLengthInMetres) {
   ContactModel model;
   derive_case(config::load_case_text(ok, "case.toml"), &model);
   EXPECT_EQ(model.pair(0, 0).law_names[2], "mfix-21");
-  EXPECT_EQ(model.pair(0, 0).rp.length, 0.6);
+  EXPECT_EQ(model.pair(0, 0).params<RollingMfix21>().length, 0.6);
   expect_error(replace(base(), from, "law = \"mfix-21\", length_m = 1.5"), "length_m = 1.5",
                {"rolling.length_m", "1.5", "[0, 1]"});
 }

@@ -84,16 +84,17 @@ TEST(NormalLsd, SpringDashpotAndClip) {
   l.normal_p = {{"stiffness", 2e4}, {"restitution", 0.3}};
   const ContactLaw law = test::law_of(l, false);
   const ContactGeometry g = geometry(1e-4, -0.5);  // separating
-  const NormalForce f = law.normal(law.np, g);
+  const NormalForce f = test::kernel<NormalLinearSpringDashpot>(law, g, nullptr);
   const double eta = normal_damping(2e4, 0.5e-3, 0.3);
   EXPECT_NEAR(f.elastic, 2.0, 1e-12);
   EXPECT_NEAR(f.damping, -0.5 * eta, 1e-12);
   EXPECT_NEAR(f.total, 2.0 - 0.5 * eta, 1e-12);
   const ContactGeometry fast = geometry(1e-5, -5.0);
-  EXPECT_LT(law.normal(law.np, fast).total, 0.0);  // MFIX: the dashpot may pull
+  EXPECT_LT(test::kernel<NormalLinearSpringDashpot>(law, fast, nullptr).total,
+            0.0);  // MFIX: the dashpot may pull
   l.normal_p["clip_attractive"] = 1;
   const ContactLaw clipped = test::law_of(l, false);
-  EXPECT_EQ(clipped.normal(clipped.np, fast).total, 0.0);
+  EXPECT_EQ(test::kernel<NormalLinearSpringDashpot>(clipped, fast, nullptr).total, 0.0);
 }
 
 TEST(TangentialHistory, SpringDashpotBelowTheCap) {
@@ -102,11 +103,13 @@ TEST(TangentialHistory, SpringDashpotBelowTheCap) {
   l.tangential_p = {{"friction", 0.5}};
   const ContactLaw law = test::law_of(l, false);
   const ContactGeometry g = geometry(1e-4, 0.0, {0, 0.01, 0});
-  Vec3 spring{};
+  double spring[3] = {};
   const double dt = 1e-5, eta_n = 1.0;
-  const Vec3 f = law.tangential(law.tp, g, eta_n, 100.0, spring, dt);
+  NormalForce fn;  // what the normal law passes on: cap force 100 N, eta_n, k_n
+  fn.total = 100.0, fn.eta = eta_n, fn.stiffness = 1e4;
+  const Vec3 f = test::kernel<TangentialLinearHistory>(law, g, fn, 0.0, spring, dt);
   const double kt = 2.0 / 7.0 * 1e4;
-  EXPECT_NEAR(spring.y, 0.01 * dt, 1e-18);
+  EXPECT_NEAR(spring[1], 0.01 * dt, 1e-18);
   EXPECT_NEAR(f.y, -kt * 0.01 * dt - 0.5 * eta_n * 0.01, 1e-12);
 }
 
@@ -116,13 +119,14 @@ TEST(TangentialHistory, CoulombCapAndSpringReset) {
   l.tangential_p = {{"friction", 0.3}};
   const ContactLaw law = test::law_of(l, false);
   const ContactGeometry g = geometry(1e-4, 0.0, {0, 0.2, 0});
-  Vec3 spring{0, 1e-3, 0};  // far beyond the cap
-  const double cap_force = 2.0, eta_n = 0.5;
-  const Vec3 f = law.tangential(law.tp, g, eta_n, cap_force, spring, 1e-5);
+  double spring[3] = {0, 1e-3, 0};  // far beyond the cap
+  NormalForce fn;
+  fn.total = 2.0, fn.eta = 0.5, fn.stiffness = 1e4;
+  const Vec3 f = test::kernel<TangentialLinearHistory>(law, g, fn, 0.0, spring, 1e-5);
   EXPECT_NEAR(norm(f), 0.3 * 2.0, 1e-12);
   EXPECT_LT(f.y, 0.0);
   // E6: on slip the spring is reset to the cap, k_t |xi| = mu F_n, along the force.
-  EXPECT_NEAR(-law.tp.stiffness * spring.y, f.y, 1e-12);
+  EXPECT_NEAR(-2.0 / 7.0 * 1e4 * spring[1], f.y, 1e-12);
 }
 
 TEST(TangentialHistory, SpringIsRotatedIntoTheNewTangentPlane) {
@@ -137,25 +141,32 @@ TEST(CohesionLaws, ForceVersusGap) {
   Laws l;
   l.cohesion = "overlap-only";
   ContactLaw law = test::law_of(l, false, F, F);
-  EXPECT_EQ(law.cohesion(law.cp, geometry(1e-6)), F);
-  EXPECT_EQ(law.cohesion(law.cp, geometry(-1e-9)), 0.0);
-  EXPECT_EQ(law.cp.reach_over_d, 0.0);
+  EXPECT_EQ(test::kernel<CohesionOverlapOnly>(law, geometry(1e-6), NormalForce{}, nullptr), F);
+  EXPECT_EQ(test::kernel<CohesionOverlapOnly>(law, geometry(-1e-9), NormalForce{}, nullptr), 0.0);
+  EXPECT_EQ(law.reach_over_d, 0.0);
 
   l.cohesion = "constant-range";
   l.cohesion_p = {{"range", 0.02}};
   law = test::law_of(l, false, F, F);
-  EXPECT_EQ(law.cohesion(law.cp, geometry(1e-6)), F);
-  EXPECT_EQ(law.cohesion(law.cp, geometry(-0.019 * d_ref)), F);
-  EXPECT_EQ(law.cohesion(law.cp, geometry(-0.021 * d_ref)), 0.0);
+  EXPECT_EQ(test::kernel<CohesionConstantRange>(law, geometry(1e-6), NormalForce{}, nullptr), F);
+  EXPECT_EQ(
+      test::kernel<CohesionConstantRange>(law, geometry(-0.019 * d_ref), NormalForce{}, nullptr),
+      F);
+  EXPECT_EQ(
+      test::kernel<CohesionConstantRange>(law, geometry(-0.021 * d_ref), NormalForce{}, nullptr),
+      0.0);
 
   l.cohesion = "mfix-like";
   l.cohesion_p = {{"inner", 0.001}, {"outer", 0.05}};
   law = test::law_of(l, false, F, F);
-  EXPECT_EQ(law.cohesion(law.cp, geometry(1e-6)), F);
-  EXPECT_EQ(law.cohesion(law.cp, geometry(-0.0005 * d_ref)), F);
-  EXPECT_NEAR(law.cohesion(law.cp, geometry(-0.004 * d_ref)), F / 16.0, 1e-12);
-  EXPECT_EQ(law.cohesion(law.cp, geometry(-0.051 * d_ref)), 0.0);
-  EXPECT_EQ(law.cp.reach_over_d, 0.05);
+  EXPECT_EQ(test::kernel<CohesionMfixLike>(law, geometry(1e-6), NormalForce{}, nullptr), F);
+  EXPECT_EQ(test::kernel<CohesionMfixLike>(law, geometry(-0.0005 * d_ref), NormalForce{}, nullptr),
+            F);
+  EXPECT_NEAR(test::kernel<CohesionMfixLike>(law, geometry(-0.004 * d_ref), NormalForce{}, nullptr),
+              F / 16.0, 1e-12);
+  EXPECT_EQ(test::kernel<CohesionMfixLike>(law, geometry(-0.051 * d_ref), NormalForce{}, nullptr),
+            0.0);
+  EXPECT_EQ(law.reach_over_d, 0.05);
 }
 
 TEST(CohesionLaws, PairRulesAndWallFactor) {
@@ -165,14 +176,14 @@ TEST(CohesionLaws, PairRulesAndWallFactor) {
   Laws l;
   l.cohesion = "overlap-only";
   l.cohesion_s = {{"pair_rule", "min"}};
-  EXPECT_DOUBLE_EQ(test::law_of(l, false, 0.26, 0.417).cp.force, 0.26);
+  EXPECT_DOUBLE_EQ(test::cohesion_force(test::law_of(l, false, 0.26, 0.417)), 0.26);
   l.cohesion_s.clear();
   l.cohesion_p = {{"wall_factor", 0.5}};
-  EXPECT_DOUBLE_EQ(test::law_of(l, true, 0.26).cp.force, 0.13);
+  EXPECT_DOUBLE_EQ(test::cohesion_force(test::law_of(l, true, 0.26)), 0.13);
   l.cohesion_p = {{"wall_factor", 0.5}, {"factor", 0.1}};
-  EXPECT_DOUBLE_EQ(test::law_of(l, true, 0.26).cp.force, 0.013);
+  EXPECT_DOUBLE_EQ(test::cohesion_force(test::law_of(l, true, 0.26)), 0.013);
   l.cohesion_p = {{"factor", 0.1}};
-  EXPECT_DOUBLE_EQ(test::law_of(l, false, 0.2, 0.4).cp.force, 0.1 * 0.3);
+  EXPECT_DOUBLE_EQ(test::cohesion_force(test::law_of(l, false, 0.2, 0.4)), 0.1 * 0.3);
 }
 
 // Quasi-static pull-off work W = integral of the net attractive force from the bonded
@@ -181,8 +192,8 @@ double pull_off_work(const ContactLaw& law) {
   ContactState s;
   const double d_ref = 1e-2;
   double w = 0.0;
-  const double delta_eq = law.cp.force / law.np.stiffness;
-  const double end = law.cp.reach_over_d * d_ref + 1e-9;
+  const double delta_eq = test::cohesion_force(law) / test::normal_stiffness(law);
+  const double end = law.reach_over_d * d_ref + 1e-9;
   const int n = 400000;
   const double h = (delta_eq + end) / n;
   for (int k = 0; k < n; ++k) {
@@ -222,9 +233,11 @@ TEST(RollingEpsd, LimitTorqueAndOppositeOnPartner) {
   g.omega_i = {0, 100.0, 0};
   NormalForce fn;
   fn.total = 1.0;
-  Vec3 spring{};
-  const RollingTorque t = law.rolling(law.rp, g, law.np, fn, 0.0, spring, 1e-3);
-  EXPECT_NEAR(norm(spring), 0.2 * g.r_eff * 1.0, 1e-15);  // saturated at mu_r R_eff |F_n|
+  fn.stiffness = 1e4;
+  double spring[3] = {};
+  const RollingTorque t = test::kernel<RollingEpsd>(law, g, fn, 0.0, spring, 1e-3);
+  // saturated at mu_r R_eff |F_n|
+  EXPECT_NEAR(norm(Vec3{spring[0], spring[1], spring[2]}), 0.2 * g.r_eff * 1.0, 1e-15);
   EXPECT_LT(t.on_i.y, 0.0);
   EXPECT_NEAR(t.on_j.y, -t.on_i.y, 1e-18);
 }
@@ -245,7 +258,7 @@ TEST(SeesCohesion, TensionGivesNoFrictionOrRollingCapacity) {
   ContactState s;
   const ContactResult r = evaluate_contact(law, g, s, 1e-4);
   EXPECT_NEAR(r.force_i.y, 0.0, 1e-15);
-  EXPECT_NEAR(norm(s.rolling), 0.0, 1e-15);
+  EXPECT_NEAR(norm(s.vec(law.layout.offset[int(Slot::Rolling)])), 0.0, 1e-15);
 }
 
 TEST(RollingMfix, TorqueOpposesOwnSpinWithDiameter) {
@@ -257,8 +270,8 @@ TEST(RollingMfix, TorqueOpposesOwnSpinWithDiameter) {
   ContactGeometry g = geometry(1e-4);
   g.omega_i = {0, 0, 3.0};
   g.omega_j = {2.0, 0, 0};
-  Vec3 spring{};
-  const RollingTorque t = law.rolling(law.rp, g, law.np, {}, 0.0, spring, 1e-5);
+  const RollingTorque t =
+      test::kernel<RollingMfix>(law, g, test::normal_force(law, g), 0.0, nullptr, 1e-5);
   const double mag = 0.6 * 1e-2 * 1e4 * 1e-4;  // mu_r d k_n delta_n
   EXPECT_NEAR(t.on_i.z, -mag, 1e-15);
   EXPECT_NEAR(t.on_j.x, -mag, 1e-15);
@@ -273,11 +286,14 @@ TEST(RollingMfix, RegularizedOnlyBelowTenStepsOfSpin) {
   ContactGeometry g = geometry(1e-4);
   const double mag = 0.6 * 1e-2 * 1e4 * 1e-4, dt = 1e-5;
   const double w_eps = 10 * mag * dt / g.inertia_i;  // 6 rad/s here
-  Vec3 spring{};
-  g.omega_i = {0, 0, 2 * w_eps};  // rolling: exactly MFIX
-  EXPECT_NEAR(law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z, -mag, 1e-15);
+  g.omega_i = {0, 0, 2 * w_eps};                     // rolling: exactly MFIX
+  EXPECT_NEAR(
+      test::kernel<RollingMfix>(law, g, test::normal_force(law, g), 0.0, nullptr, dt).on_i.z, -mag,
+      1e-15);
   g.omega_i = {0, 0, 0.25 * w_eps};  // nearly at rest: a viscous stop
-  EXPECT_NEAR(law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z, -0.25 * mag, 1e-15);
+  EXPECT_NEAR(
+      test::kernel<RollingMfix>(law, g, test::normal_force(law, g), 0.0, nullptr, dt).on_i.z,
+      -0.25 * mag, 1e-15);
 }
 
 // MFiX 21.3's form with L = mu_r d is MFiX 25.x's (`mfix`): the same torque on both particles,
@@ -296,9 +312,10 @@ TEST(RollingMfix21, SameTorqueAsMfixWhenLengthIsMuRTimesD) {
     for (double w : {0.0, 0.25 * w_eps, 2 * w_eps, 300.0}) {
       g.omega_i = {0.6 * w, 0, -0.8 * w};
       g.omega_j = {0, w, 0};
-      Vec3 spring{};
-      const RollingTorque ta = a.rolling(a.rp, g, a.np, {}, 0.0, spring, dt);
-      const RollingTorque tb = b.rolling(b.rp, g, b.np, {}, 0.0, spring, dt);
+      const RollingTorque ta =
+          test::kernel<RollingMfix>(a, g, test::normal_force(a, g), 0.0, nullptr, dt);
+      const RollingTorque tb =
+          test::kernel<RollingMfix21>(b, g, test::normal_force(b, g), 0.0, nullptr, dt);
       if (w > 0.0) {
         EXPECT_GT(norm(ta.on_i), 0.0);  // the comparison is not 0 = 0
       }
@@ -325,8 +342,8 @@ TEST(RollingMfix21, NoLeverArmSameTorqueOnUnequalSpheres) {
   i.omega = {0, 0, 3.0};
   j.omega = {-2.0, 0, 0};
   const ContactGeometry g = pair_geometry(i, j);
-  Vec3 spring{};
-  const RollingTorque t = law.rolling(law.rp, g, law.np, {}, 0.0, spring, 1e-5);
+  const RollingTorque t =
+      test::kernel<RollingMfix21>(law, g, test::normal_force(law, g), 0.0, nullptr, 1e-5);
   const double mag = 0.6 * 1e4 * 1e-4;  // L k_n delta_n = 0.6 N m
   EXPECT_NEAR(t.on_i.z, -mag, 1e-12);
   EXPECT_NEAR(t.on_j.x, mag, 1e-12);
@@ -335,7 +352,8 @@ TEST(RollingMfix21, NoLeverArmSameTorqueOnUnequalSpheres) {
   // Against a wall: i only.
   const ContactLaw wall = test::law_of(l, true);
   const ContactGeometry gw = wall_geometry(i, {1, 0, 0}, 5e-3 - 1e-4, {});
-  const RollingTorque tw = wall.rolling(wall.rp, gw, wall.np, {}, 0.0, spring, 1e-5);
+  const RollingTorque tw =
+      test::kernel<RollingMfix21>(wall, gw, test::normal_force(wall, gw), 0.0, nullptr, 1e-5);
   EXPECT_NEAR(tw.on_i.z, -mag, 1e-12);
   EXPECT_EQ(norm(tw.on_j), 0.0);
 }
@@ -353,11 +371,15 @@ TEST(RollingMfix21, RegularizedStopIsTheSameViscousCoefficientForAnyLength) {
     const ContactLaw law = test::law_of(l, false);
     ContactGeometry g = geometry(1e-4);
     const double mag = length * 1e4 * 1e-4, w_eps = 10 * mag * dt / g.inertia_i;
-    Vec3 spring{};
     g.omega_i = {0, 0, 2 * w_eps};
-    EXPECT_NEAR(law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z / -mag, 1.0, 1e-12);
+    EXPECT_NEAR(
+        test::kernel<RollingMfix21>(law, g, test::normal_force(law, g), 0.0, nullptr, dt).on_i.z /
+            -mag,
+        1.0, 1e-12);
     g.omega_i = {0, 0, 0.25 * w_eps};
-    const double c = -law.rolling(law.rp, g, law.np, {}, 0.0, spring, dt).on_i.z / g.omega_i.z;
+    const double c =
+        -test::kernel<RollingMfix21>(law, g, test::normal_force(law, g), 0.0, nullptr, dt).on_i.z /
+        g.omega_i.z;
     EXPECT_NEAR(c / (g.inertia_i / (10 * dt)), 1.0, 1e-12) << length;
   }
 }
@@ -369,10 +391,11 @@ TEST(ContactModel, NoTouchClearsHistoryAndRangedCohesionStillPulls) {
   l.cohesion = "constant-range";
   l.cohesion_p = {{"range", 0.05}};
   const ContactLaw law = test::law_of(l, false, 0.1, 0.1);
-  ContactState s{{0, 1e-6, 0}, {}};
+  ContactState s;
+  s.h[1] = 1e-6;  // the tangential spring (the first law with a history)
   const ContactResult r = evaluate_contact(law, geometry(-1e-4), s, 1e-5);
   EXPECT_FALSE(r.touching);
-  EXPECT_EQ(norm2(s.tangential), 0.0);
+  EXPECT_EQ(norm2(s.vec(0)), 0.0);
   EXPECT_NEAR(r.force_i.x, -0.1, 1e-15);  // pulls i towards j
 }
 
