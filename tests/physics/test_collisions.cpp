@@ -155,5 +155,57 @@ TEST(Collisions, TP3_ClippingRaisesLowRestitution) {
   }
 }
 
+// ---- Hertz (normal_hertz.hpp) ---------------------------------------------------------------
+// An elastic Hertz impact at speed v peaks at delta_max = (15 m_eff v^2 / (16 E*
+// sqrt(R_eff)))^(2/5) and lasts t_c = 2 I delta_max / v, I = int_0^1 (1 - x^(5/2))^(-1/2) dx
+// (Johnson 1985, Contact Mechanics, 11.4: t_c = 2.94 delta_max / v). With the Tsuji damping and
+// Antypov & Elliott's alpha the restitution is e at every speed.
+constexpr double kE = 5e6, kNu = 0.3;
+
+test::Laws hertz(double e, double reference_speed) {
+  test::Laws l;
+  l.normal = "hertz";
+  l.normal_p = {{"youngs_modulus", kE},
+                {"poisson_ratio", kNu},
+                {"restitution", e},
+                {"reference_speed", reference_speed}};
+  return l;
+}
+
+TEST(Hertz, ElasticPeakOverlapAndContactTimeAsHertzTheory) {
+  const double I = std::sqrt(kPi) * std::tgamma(1.4) / std::tgamma(0.9);
+  EXPECT_NEAR(2 * I, 2.94, 0.005);  // Johnson's constant
+  const double r = 5e-3, m = test::sphere_mass_of(2 * r, 1500);
+  for (double ratio : {1.0, 0.0}) {
+    for (double v : {0.1, 1.0, 3.0}) {
+      const bool wall = ratio == 0.0;
+      const double e_star = kE / ((wall ? 1.0 : 2.0) * (1 - kNu * kNu));  // rigid wall
+      const double m_eff = wall ? m : 0.5 * m, r_eff = wall ? r : 0.5 * r;
+      const double d_max = std::pow(15 * m_eff * v * v / (16 * e_star * std::sqrt(r_eff)), 0.4);
+      const double t_c = 2 * I * d_max / v;
+      const Outcome o = collide_with(hertz(1.0, v), ratio, v, false, 200, 0.3);
+      EXPECT_NEAR(o.max_overlap / d_max, 1.0, 0.002) << "v " << v << " ratio " << ratio;
+      EXPECT_NEAR(o.duration / t_c, 1.0, 0.01) << "v " << v << " ratio " << ratio;
+      EXPECT_NEAR(o.t_col / t_c, 1.0, 1e-9) << "v " << v << " ratio " << ratio;  // sets dt
+      EXPECT_NEAR(o.restitution, 1.0, 0.002) << "v " << v << " ratio " << ratio;
+    }
+  }
+}
+
+TEST(Hertz, RestitutionIsEAtEverySpeed) {
+  for (double ratio : {1.0, 0.0}) {
+    for (double e : {0.1, 0.5, 0.9}) {
+      for (double v : {0.1, 1.0, 3.0}) {
+        std::vector<double> got;
+        for (int k = 0; k < 10; ++k)
+          got.push_back(collide_with(hertz(e, v), ratio, v, false, 200, k / 10.0).restitution);
+        std::sort(got.begin(), got.end());
+        const double median = 0.5 * (got[4] + got[5]);
+        EXPECT_NEAR(median / e, 1.0, 0.01) << "e " << e << " v " << v << " ratio " << ratio;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace silodem

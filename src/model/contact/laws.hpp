@@ -14,6 +14,7 @@
 #include "model/contact/cohesion_mfix_like.hpp"
 #include "model/contact/cohesion_none.hpp"
 #include "model/contact/cohesion_overlap_only.hpp"
+#include "model/contact/normal_hertz.hpp"
 #include "model/contact/normal_linear_spring_dashpot.hpp"
 #include "model/contact/rolling_epsd.hpp"
 #include "model/contact/rolling_mfix.hpp"
@@ -27,7 +28,7 @@ namespace silodem {
 template <class... Laws>
 struct LawList {};
 
-using NormalLaws = LawList<NormalLinearSpringDashpot>;
+using NormalLaws = LawList<NormalLinearSpringDashpot, NormalHertz>;
 using TangentialLaws = LawList<TangentialNone, TangentialLinearHistory>;
 using RollingLaws = LawList<RollingNone, RollingMfix, RollingEpsd, RollingMfix21>;
 using CohesionLaws =
