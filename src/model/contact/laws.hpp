@@ -16,6 +16,7 @@
 #include "model/contact/cohesion_overlap_only.hpp"
 #include "model/contact/normal_hertz.hpp"
 #include "model/contact/normal_linear_spring_dashpot.hpp"
+#include "model/contact/normal_luding.hpp"
 #include "model/contact/rolling_epsd.hpp"
 #include "model/contact/rolling_mfix.hpp"
 #include "model/contact/rolling_mfix21.hpp"
@@ -28,7 +29,7 @@ namespace silodem {
 template <class... Laws>
 struct LawList {};
 
-using NormalLaws = LawList<NormalLinearSpringDashpot, NormalHertz>;
+using NormalLaws = LawList<NormalLinearSpringDashpot, NormalHertz, NormalLuding>;
 using TangentialLaws = LawList<TangentialNone, TangentialLinearHistory>;
 using RollingLaws = LawList<RollingNone, RollingMfix, RollingEpsd, RollingMfix21>;
 using CohesionLaws =

@@ -399,5 +399,113 @@ TEST(ContactModel, NoTouchClearsHistoryAndRangedCohesionStillPulls) {
   EXPECT_NEAR(r.force_i.x, -0.1, 1e-15);  // pulls i towards j
 }
 
+// ---- Luding's elasto-plastic adhesive law (normal_luding.hpp; Luding 2008, Eq. 3-6) ----------
+Laws luding(double phi_f = 0.0, double scale = 1.0) {
+  Laws l;
+  l.normal = "luding";
+  l.normal_p = {{"stiffness", 1e3 * scale},
+                {"unloading_stiffness", 5e3 * scale},
+                {"adhesion_stiffness", 2e3 * scale},
+                {"plastic_depth", phi_f},
+                {"restitution", 0.5}};
+  return l;
+}
+
+// The elastic part of the normal force along a path of overlaps, the history carried.
+std::vector<double> luding_path(const ContactLaw& law, const std::vector<double>& overlaps,
+                                double* delta_max = nullptr) {
+  ContactState s;
+  std::vector<double> f;
+  for (double o : overlaps) f.push_back(test::normal_force_with(law, geometry(o), s).elastic);
+  if (delta_max) *delta_max = s.h[0];
+  return f;
+}
+
+TEST(NormalLuding, LoadingUnloadingAndTheAdhesiveLimit) {
+  const ContactLaw law = test::law_of(luding(), false);
+  const double k1 = 1e3, k2 = 5e3, kc = 2e3, dmax = 1e-4;
+  const double d0 = (1 - k1 / k2) * dmax;            // 0.8e-4: force-free after unloading
+  const double dmin = (k2 - k1) / (k2 + kc) * dmax;  // where the pull is largest
+  std::vector<double> path;
+  for (int k = 1; k <= 1000; ++k) path.push_back(dmax * k / 1000);        // load on k1
+  for (int k = 999; k >= 1; --k) path.push_back(dmax * k / 1000 + 1e-9);  // unload
+  double after = 0;
+  const std::vector<double> f = luding_path(law, path, &after);
+  auto at = [&](int k) { return path[std::size_t(k)]; };
+  EXPECT_NEAR(f[999], k1 * dmax, 1e-12);              // the top of the loading line
+  EXPECT_NEAR(f[1099], k2 * (at(1099) - d0), 1e-12);  // unloading on the slope k2
+  EXPECT_NEAR(f[1199], k2 * (at(1199) - d0), 1e-12);  // force-free at delta0 = 0.8 dmax
+  EXPECT_NEAR(f[1199], 0.0, 1e-5);
+  EXPECT_NEAR(f[1799], -kc * at(1799), 1e-12);  // 0.2 dmax: on the adhesive limit
+  double pull = 0;
+  for (double x : f) pull = std::min(pull, x);
+  // The largest pull, at delta_min = 4/7 dmax, within the path's sampling (dmax / 1000).
+  EXPECT_GE(pull, -kc * dmin - 1e-12);
+  EXPECT_NEAR(pull, -kc * dmin, 0.005 * kc * dmin);
+  // On the adhesive limit delta_max follows the overlap: (k2 + kc) / (k2 - k1) delta.
+  EXPECT_NEAR(after / ((k2 + kc) / (k2 - k1) * path.back()), 1.0, 1e-9);  // geometry rounding
+}
+
+TEST(NormalLuding, PullOffIsAFixedFractionOfTheLargestLoad) {
+  // Press with F_max on the loading branch, then unload slowly to the end: the largest pull is
+  // kc (k2 - k1) / ((k2 + kc) k1) F_max (Luding 2008, Eq. 6).
+  const ContactLaw law = test::law_of(luding(), false);
+  const double k1 = 1e3, k2 = 5e3, kc = 2e3, lambda = kc * (k2 - k1) / ((k2 + kc) * k1);
+  for (double f_max : {0.05, 0.1, 0.4}) {
+    std::vector<double> path;
+    const double dmax = f_max / k1;
+    for (int k = 1; k <= 100; ++k) path.push_back(dmax * k / 100);
+    for (int k = 999; k >= 1; --k) path.push_back(dmax * k / 1000);
+    double pull = 0;
+    for (double x : luding_path(law, path)) pull = std::min(pull, x);
+    EXPECT_NEAR(-pull / (lambda * f_max), 1.0, 0.01) << f_max;
+  }
+}
+
+TEST(NormalLuding, StrengthUnderOneStressIsTheSameForEveryK) {
+  // The CG rule of docs/models/normal_luding.md: stiffnesses in proportion to the diameter. A
+  // contact of CG spheres k times larger, consolidated at the same stress (F_max = sigma d^2),
+  // then has the same strength f_pull / d^2, also with a plastic depth (k2 depends on
+  // delta_max / d). Without the rule (the same stiffnesses for every k) it does not.
+  const double sigma = 2e3, d0 = 1e-2;  // Pa; the geometry's spheres, d = 1 cm
+  auto strength = [&](double k, bool scaled) {
+    const ContactLaw law = test::law_of(luding(0.05, scaled ? k : 1.0), false);
+    BodyState i, j;
+    i.radius = j.radius = 0.5 * k * d0;
+    i.mass = j.mass = 1e-3 * k * k * k;
+    i.inertia = j.inertia = 0.4 * i.mass * i.radius * i.radius;
+    i.inv_inertia = j.inv_inertia = 1.0 / i.inertia;
+    const double f_max = sigma * (k * d0) * (k * d0);
+    ContactState s;
+    // Load to f_max along the loading line f = k1 delta, then unload to the end.
+    const double k1 = 1e3 * (scaled ? k : 1.0), dmax = f_max / k1;
+    double pull = 0;
+    for (int step = 1; step <= 2000; ++step) {
+      const double o = step <= 1000 ? dmax * step / 1000 : dmax * (2000 - step + 0.5) / 1000;
+      i.x = {2 * i.radius - o, 0, 0};
+      pull = std::min(pull, test::normal_force_with(law, pair_geometry(i, j), s).elastic);
+    }
+    return -pull / ((k * d0) * (k * d0));
+  };
+  const double base = strength(1, true);
+  EXPECT_GT(base, 0.0);
+  for (double k : {2.0, 3.0, 4.0}) EXPECT_NEAR(strength(k, true) / base, 1.0, 1e-3) << k;
+  EXPECT_GT(std::fabs(strength(4, false) / base - 1.0), 0.05);  // the rule matters
+}
+
+TEST(NormalLuding, HistoryLivesAsLongAsTheContact) {
+  const ContactLaw law = test::law_of(luding(), false);
+  ASSERT_EQ(law.layout.size, 1);
+  EXPECT_EQ(law.layout.swap[0], 1.0);  // a scalar: the same seen from i or from j
+  ContactState s;
+  const ContactGeometry pressed = geometry(1e-4);
+  evaluate_contact(law, pressed, s, 1e-6);
+  EXPECT_EQ(s.h[0], pressed.overlap);
+  evaluate_contact(law, geometry(0.9e-4), s, 1e-6);  // k2 (delta - delta0) = 0.05 N: unloading
+  EXPECT_EQ(s.h[0], pressed.overlap);                // keeps the largest overlap
+  evaluate_contact(law, geometry(-1e-6), s, 1e-6);
+  EXPECT_EQ(s.h[0], 0.0);  // separated: a new contact starts fresh
+}
+
 }  // namespace
 }  // namespace silodem
