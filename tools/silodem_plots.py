@@ -435,7 +435,8 @@ def print_label_check(records):
 CSS = """
 body { font-family: sans-serif; margin: 2em auto; max-width: 1100px; color: #222; }
 h1 { font-size: 1.5em; } h2 { font-size: 1.2em; margin-top: 1.6em; }
-table { border-collapse: collapse; margin: 0.5em 0; }
+.table-wrap { overflow-x: auto; max-width: 100%; margin: 0.5em 0; }
+table { border-collapse: collapse; font-size: 0.92em; }
 th, td { border: 1px solid #bbb; padding: 0.25em 0.6em; text-align: left; }
 th { background: #eee; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
@@ -453,15 +454,17 @@ def esc(value):
 
 
 def html_table(headers, rows, numeric=()):
-    """An HTML table; cells are escaped; columns whose index is in `numeric` align right."""
-    out = ["<table>", "<tr>" + "".join("<th>{}</th>".format(esc(h)) for h in headers) + "</tr>"]
+    """An HTML table; cells are escaped; columns whose index is in `numeric` align right. It sits
+    in a box that scrolls sideways, so a table wider than the page (fill.csv has a dozen columns)
+    does not run off it."""
+    out = ['<div class="table-wrap"><table>', "<tr>" + "".join("<th>{}</th>".format(esc(h)) for h in headers) + "</tr>"]
     for row in rows:
         cells = []
         for i, cell in enumerate(row):
             cls = ' class="num"' if i in numeric else ""
             cells.append("<td{}>{}</td>".format(cls, esc(cell)))
         out.append("<tr>" + "".join(cells) + "</tr>")
-    out.append("</table>")
+    out.append("</table></div>")
     return "\n".join(out)
 
 

@@ -27,6 +27,10 @@ for f in rate_cumulative calorific fractions snapshots_coal snapshots_velocity v
   [ -s "$work/run/figures/$f.png" ] || bad "missing figures/$f.png"
   grep -q "figures/$f.png" "$work/run/report.html" || bad "report.html does not show $f.png"
 done
+# The fill table (a dozen columns) scrolls inside its box instead of running off the page.
+grep -A1 '<div class="table-wrap"><table>' "$work/run/report.html" | grep -q "segment\|coal" ||
+  bad "report.html's fill table is not in a scrolling box"
+grep -q "\.table-wrap { overflow-x: auto" "$work/run/report.html" || bad "report.html lacks the table box style"
 ls "$work/run"/*.partial "$work/run"/vtk/*.partial > /dev/null 2>&1 && bad "a .partial file was left behind"
 python3 - "$work/run" <<'PY' || fail=1
 import csv, json, sys, os
