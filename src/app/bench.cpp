@@ -227,6 +227,11 @@ int bench_from_checkpoint(const BenchOptions& o) {
   // --set changes the run's case from the checkpoint on (e.g. a speed-only key such as
   // simulation.reorder_every, or a what-if); the run directory itself is not touched.
   RunCheckpoint rc = open_run_checkpoint(o.from_dir, /*force=*/false, "--from");
+  if (rc.reader.next_is("FILP"))
+    throw InputError({}, "--from",
+                     fmt::format("'{}' stopped during its fill: finish it first (silodem run "
+                                 "--resume {})",
+                                 o.from_dir, o.from_dir));
   if (!o.overrides.empty()) {
     std::vector<std::string> all = rc.overrides;
     all.insert(all.end(), o.overrides.begin(), o.overrides.end());

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Runs many silo runs as child `silodem run` processes, several side by side, each into its own
 // run directory: a finished run is skipped, a killed one resumed from its checkpoint (or started
-// again if it was killed before its discharge began). The children die with the parent
-// (PR_SET_PDEATHSIG), and a lock on the parent's directory keeps two runners out of it, so a
+// again if it was killed before its first checkpoint, early in its fill). The children die with the
+// parent (PR_SET_PDEATHSIG), and a lock on the parent's directory keeps two runners out of it, so a
 // killed study or calibration continues where it was when the same command is given again.
 #pragma once
 #include <filesystem>

@@ -153,18 +153,79 @@ class SiloRun {
     out_ = out;
     case_hash_ = case_hash(out_);  // the case as started (an edit during the run is a change)
     write_summary_running();
+    return fill_and_discharge(nullptr);
+  }
+
+  // Continue an interrupted or killed run from DIR/checkpoint.bin: its fill, or its discharge.
+  int resume(const fs::path& out, ByteReader& r, std::uint64_t hash) {
+    out_ = out;
+    case_hash_ = hash;
+    if (r.next_is("FILP")) {
+      r.tag("FILP");
+      r.get(wall_before_);
+      FillProgress from;
+      from.load(r);
+      sim_->load(r);
+      if (!r.done()) throw std::runtime_error("checkpoint: unread bytes at the end");
+      write_summary_running();
+      fmt::print("resumed the fill in segment H{} at t = {:.3f} s ({} particles, step {})\n",
+                 from.segment + 1, sim_->time(), sim_->particles().size(), sim_->step_count());
+      return fill_and_discharge(&from);
+    }
+    read_fill_block(r, wall_before_, fill_);
+    sim_->load(r);
+    dis_->load(r);
+    observers_ = std::make_unique<Observers>(c_, out_, dis_->t0(), r);
+    if (!r.done()) throw std::runtime_error("checkpoint: unread bytes at the end");
+    observers_->attach(*sim_);
+    write_summary_running();
+    fmt::print("resumed at t = {:.3f} s after the valve opened ({} particles, step {})\n",
+               sim_->time() - dis_->t0(), sim_->particles().size(), sim_->step_count());
+    return discharge();
+  }
+
+ private:
+  double wall() const { return wall_before_ + progress_.elapsed(); }
+
+  // The fill (from the start, or continued from `from`), then the discharge. The fill is
+  // checkpointed between settling chunks, by simulated and by wall time as the discharge is, and
+  // on a signal.
+  int fill_and_discharge(const FillProgress* from) {
     Random rng(c_.time.seed);
+    double sim_at_ck = sim_->time(), wall_at_ck = wall();
+    auto fill_checkpoint = [&](const FillProgress& fp) {
+      const bool stop = g_signal.load() != 0;
+      const double dt_sim = c_.time.checkpoint_interval, dt_wall = c_.time.checkpoint_wall_interval;
+      if (stop || (dt_sim > 0 && sim_->time() - sim_at_ck >= dt_sim) ||
+          (dt_wall > 0 && wall() - wall_at_ck >= dt_wall)) {
+        ByteWriter w;
+        w.put(case_hash_);
+        w.put(std::int32_t(sim_->settings().threads));
+        w.tag("FILP");
+        w.put(wall());
+        fp.save(w);
+        sim_->save(w);
+        write_checkpoint((out_ / "checkpoint.bin").string(), w);
+        sim_at_ck = sim_->time(), wall_at_ck = wall();
+      }
+      if (stop) throw InterruptedFill{};
+    };
     try {
-      fill_ = fill_silo(*sim_, c_, report_.segment_coal, rng, [&](const std::string& s) {
-        if (g_signal.load()) throw InterruptedFill{};
-        progress_.show(fmt::format("fill {}  particles {}  wall {:.0f} s", s,
-                                   sim_->particles().size(), wall()));
-      });
+      fill_ = fill_silo(
+          *sim_, c_, report_.segment_coal, rng,
+          [&](const std::string& s) {
+            progress_.show(fmt::format("fill {}  particles {}  wall {:.0f} s", s,
+                                       sim_->particles().size(), wall()));
+          },
+          fill_checkpoint, from);
     } catch (const InterruptedFill&) {
       progress_.finish();
-      error_ = "interrupted during the fill (nothing to resume: run the case again)";
+      error_ = fmt::format("interrupted by signal {} during the fill", g_signal.load());
       write_summary("interrupted during the fill");
-      fmt::print(stderr, "{}\n", error_);
+      fmt::print(stderr,
+                 "interrupted during the fill; checkpoint written; continue with: silodem run "
+                 "--resume {}\n",
+                 out_.string());
       return kExitInterrupted;
     } catch (const SimulationError& e) {
       progress_.finish();
@@ -185,25 +246,6 @@ class SiloRun {
     checkpoint();               // a kill from here on loses at most checkpoint_interval
     return discharge();
   }
-
-  // Continue an interrupted or killed run from DIR/checkpoint.bin.
-  int resume(const fs::path& out, ByteReader& r, std::uint64_t hash) {
-    out_ = out;
-    case_hash_ = hash;
-    read_fill_block(r, wall_before_, fill_);
-    sim_->load(r);
-    dis_->load(r);
-    observers_ = std::make_unique<Observers>(c_, out_, dis_->t0(), r);
-    if (!r.done()) throw std::runtime_error("checkpoint: unread bytes at the end");
-    observers_->attach(*sim_);
-    write_summary_running();
-    fmt::print("resumed at t = {:.3f} s after the valve opened ({} particles, step {})\n",
-               sim_->time() - dis_->t0(), sim_->particles().size(), sim_->step_count());
-    return discharge();
-  }
-
- private:
-  double wall() const { return wall_before_ + progress_.elapsed(); }
 
   void checkpoint() {
     ByteWriter w;
@@ -439,12 +481,20 @@ RunCheckpoint open_run_checkpoint(const fs::path& out, bool force, const char* o
     throw InputError({}, option,
                      run_state(out) == RunState::Finished  // summary.json read as JSON
                          ? fmt::format("'{}' is a complete run: nothing to resume", out.string())
-                         : fmt::format("'{}' has no checkpoint.bin (a run interrupted before "
-                                       "its discharge began restarts from the case: silodem "
-                                       "run {}/case.toml --out NEW_DIR)",
+                         : fmt::format("'{}' has no checkpoint.bin (a run killed before its "
+                                       "first checkpoint in the fill restarts from the case: "
+                                       "silodem run {}/case.toml --out NEW_DIR)",
                                        out.string(), out.string()));
   }
-  RunCheckpoint rc{{}, {}, {}, read_checkpoint(ck.string()), 0, 0, {}};
+  // A truncated, foreign or other-version file is bad input to the command: one line, exit 2.
+  auto read = [&] {
+    try {
+      return read_checkpoint(ck.string());
+    } catch (const std::runtime_error& e) {
+      throw InputError({}, option, e.what());
+    }
+  };
+  RunCheckpoint rc{{}, {}, {}, read(), 0, 0, {}};
   rc.hash = rc.reader.get<std::uint64_t>();
   rc.threads = rc.reader.get<std::int32_t>();
   if (rc.hash != case_hash(out) && !force)

@@ -12,7 +12,7 @@ namespace silodem {
 
 enum class RunState {
   Absent,     // no directory, or an empty one: start it
-  Restart,    // started but killed before its discharge began (no checkpoint): start it again
+  Restart,    // started but killed before its first checkpoint (in the fill): start it again
   Resumable,  // checkpoint.bin and no final summary: `run --resume`
   Finished,   // summary.json complete (emptied, flow stopped or time limit)
   Failed,     // summary.json names an error (a guard stopped it): a result, not redone

@@ -64,23 +64,29 @@ long insert_lattice(Simulation& sim, const SiloGeometry& g, const CoalProperties
 
 // Runs until the kinetic energy per particle is below the threshold at three checks in a row, and
 // at least for `min_time` (inserted particles start at rest: the energy is low before they fall);
-// returns the simulated time.
-double settle(Simulation& sim, double ke_threshold, double min_time, double max_time, bool& settled,
-              const Progress& progress, const std::string& what) {
-  const double t0 = sim.time();
+// returns the simulated time. The loop's state lives in `st` (settle_t0, below, min_time), set by
+// the caller, so that a fill checkpointed between two checks continues the same loop; the
+// checkpoint hook sees it after every check that does not end the settling.
+double settle(Simulation& sim, double ke_threshold, double max_time, bool& settled,
+              const Progress& progress, const std::string& what, FillProgress& st, Random& rng,
+              const FillCheckpoint& checkpoint) {
+  const double t0 = st.settle_t0;
   const long check = std::max(1L, long(2e-3 / sim.dt()));  // every 2 ms of simulated time
   settled = false;
-  int below = 0;
   while (sim.time() - t0 < max_time) {
     sim.run_steps(check);
     const double ke = kinetic_energy_per_particle(sim);
     if (progress)
       progress(fmt::format("{}: settling t = {:.3f} s, KE/particle {:.2e} J (target {:.0e})", what,
                            sim.time() - t0, ke, ke_threshold));
-    below = ke < ke_threshold ? below + 1 : 0;
-    if (below >= 3 && sim.time() - t0 >= min_time) {
+    st.below = ke < ke_threshold ? st.below + 1 : 0;
+    if (st.below >= 3 && sim.time() - t0 >= st.min_time) {
       settled = true;
       break;
+    }
+    if (checkpoint) {
+      st.rng = rng.state();
+      checkpoint(st);
     }
   }
   return sim.time() - t0;
@@ -151,54 +157,91 @@ double kinetic_energy_per_particle(const Simulation& sim) {
   return ke / double(p.size());
 }
 
+void FillProgress::save(ByteWriter& w) const {
+  w.tag("FPRG");
+  w.put(std::uint64_t(segment)), w.put(std::int32_t(phase)), w.put(seg), w.put(start);
+  w.put(settle_t0), w.put(min_time), w.put(std::int32_t(below));
+  w.put(report.segments), w.put(report.particles), w.put(report.mass), w.put(report.settle_time);
+  w.put(report.max_boundary_offset), w.put(std::uint64_t(report.warnings.size()));
+  for (const auto& m : report.warnings) w.put(m);
+  w.put(first_id), w.put(rng);
+}
+
+void FillProgress::load(ByteReader& r) {
+  r.tag("FPRG");
+  segment = std::size_t(r.get<std::uint64_t>());
+  phase = r.get<std::int32_t>();
+  r.get(seg), r.get(start), r.get(settle_t0), r.get(min_time);
+  below = r.get<std::int32_t>();
+  r.get(report.segments), r.get(report.particles), r.get(report.mass), r.get(report.settle_time);
+  r.get(report.max_boundary_offset);
+  report.warnings.resize(std::size_t(r.get<std::uint64_t>()));
+  for (auto& m : report.warnings) r.get(m);
+  r.get(first_id), r.get(rng);
+}
+
 FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& segment_coal,
-                     Random& rng, const Progress& progress) {
+                     Random& rng, const Progress& progress, const FillCheckpoint& checkpoint,
+                     const FillProgress* from) {
   const SiloGeometry& g = c.silo.geometry;
   const double fill_height = c.fill.fill_height > 0 ? c.fill.fill_height : g.cone_height;
   const double h = fill_height / c.fill.segments;
-  FillReport r;
-  std::vector<std::uint64_t> first_id;
+  FillProgress st;
+  if (from) {
+    st = *from;
+    rng.set_state(st.rng);
+  }
+  FillReport& r = st.report;
+  std::vector<std::uint64_t>& first_id = st.first_id;
   std::vector<SizeSampler> samplers;
   for (const auto& coal : c.coals) samplers.emplace_back(coal, c.cg);
-  for (std::size_t s = 0; s < segment_coal.size(); ++s) {
+  // Each segment in phases (FillProgress): insert, settle; by volume also cut and settle again.
+  for (; st.segment < segment_coal.size(); ++st.segment, st.phase = 0) {
+    const std::size_t s = st.segment;
     const int ci = segment_coal[s];
     const CoalProperties& coal = c.coals[std::size_t(ci)];
-    SegmentReport seg;
-    seg.index = int(s) + 1;
-    seg.coal = ci;
-    seg.z_low = double(s) * h;
-    seg.z_high = double(s + 1) * h;
-    seg.bulk_density_measured = coal.bulk_density;
-    const double volume = g.volume(seg.z_low, seg.z_high);
-    const std::string what = fmt::format("H{} ({})", seg.index, coal.name);
-    first_id.push_back(sim.particles().next_id());
-    const double start = top_of_bed(sim.particles(), -g.valve_gap);
-    if (c.fill.mode == FillMode::Mass) {
-      // E13: the segment holds the measured bulk density times its volume.
-      seg.target_mass = coal.bulk_density * volume;
-      insert_lattice(sim, g, coal, samplers[std::size_t(ci)], ci, start, seg.target_mass,
+    SegmentReport& seg = st.seg;
+    const std::string what = fmt::format("H{} ({})", int(s) + 1, coal.name);
+    if (st.phase == 0) {
+      seg = SegmentReport{};
+      seg.index = int(s) + 1;
+      seg.coal = ci;
+      seg.z_low = double(s) * h;
+      seg.z_high = double(s + 1) * h;
+      seg.bulk_density_measured = coal.bulk_density;
+      first_id.push_back(sim.particles().next_id());
+      st.start = top_of_bed(sim.particles(), -g.valve_gap);
+      // E13, by mass: the segment holds the measured bulk density times its volume. By volume:
+      // over-fill (at most random close packing), settle, cut at the segment top, settle again.
+      const double mass =
+          c.fill.mode == FillMode::Mass
+              ? coal.bulk_density * g.volume(seg.z_low, seg.z_high)
+              : 0.64 * coal.true_density * g.volume(std::max(st.start, 0.0), seg.z_high);
+      if (c.fill.mode == FillMode::Mass) seg.target_mass = mass;
+      insert_lattice(sim, g, coal, samplers[std::size_t(ci)], ci, st.start, mass,
                      c.fill.lattice_gap, rng);
-      seg.settle_time = settle(sim, c.fill.settle_ke, fall_time(sim.particles(), start),
-                               c.fill.settle_max_time, seg.settled, progress, what);
-    } else {
-      // By volume: over-fill (at most random close packing), settle, cut at the segment top,
-      // settle again.
-      const double mass = 0.64 * coal.true_density * g.volume(std::max(start, 0.0), seg.z_high);
-      insert_lattice(sim, g, coal, samplers[std::size_t(ci)], ci, start, mass, c.fill.lattice_gap,
-                     rng);
-      seg.settle_time = settle(sim, c.fill.settle_ke, fall_time(sim.particles(), start),
-                               c.fill.settle_max_time, seg.settled, progress, what);
-      std::vector<std::size_t> above;
-      const auto& p = sim.particles();
-      for (std::size_t i = 0; i < p.size(); ++i)
-        if (p.id[i] >= first_id.back() && p.x[i].z > seg.z_high) above.push_back(i);
-      if (top_of_bed(p, 0.0) < seg.z_high)
-        r.warnings.push_back(
-            fmt::format("{}: the settled bed did not reach the segment top", what));
-      sim.remove_particles(above);
+      st.phase = 1, st.settle_t0 = sim.time(), st.below = 0;
+      st.min_time = fall_time(sim.particles(), st.start);
+    }
+    if (st.phase == 1) {
+      seg.settle_time = settle(sim, c.fill.settle_ke, c.fill.settle_max_time, seg.settled, progress,
+                               what, st, rng, checkpoint);
+      if (c.fill.mode == FillMode::Volume) {
+        std::vector<std::size_t> above;
+        const auto& p = sim.particles();
+        for (std::size_t i = 0; i < p.size(); ++i)
+          if (p.id[i] >= first_id.back() && p.x[i].z > seg.z_high) above.push_back(i);
+        if (top_of_bed(p, 0.0) < seg.z_high)
+          r.warnings.push_back(
+              fmt::format("{}: the settled bed did not reach the segment top", what));
+        sim.remove_particles(above);
+        st.phase = 2, st.settle_t0 = sim.time(), st.below = 0, st.min_time = 0.05;
+      }
+    }
+    if (st.phase == 2) {
       bool again = false;
-      seg.settle_time +=
-          settle(sim, c.fill.settle_ke, 0.05, c.fill.settle_max_time, again, progress, what);
+      seg.settle_time += settle(sim, c.fill.settle_ke, c.fill.settle_max_time, again, progress,
+                                what, st, rng, checkpoint);
       seg.settled = seg.settled && again;
       seg.target_mass = 0.0;
     }
@@ -240,7 +283,7 @@ FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& seg
         "diameter ({:.1f} mm): the fill by mass packs at a bulk density other than the measured "
         "one (see fill.csv; mode = \"volume\" fills each segment to its top)",
         r.max_boundary_offset * 1e3, d_max * 1e3));
-  return r;
+  return r;  // a copy: st (and its report) ends here
 }
 
 }  // namespace silodem

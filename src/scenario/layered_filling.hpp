@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bytes.hpp"
 #include "core/random.hpp"
 #include "engine/simulation.hpp"
 #include "scenario/case.hpp"
@@ -38,10 +39,34 @@ struct FillReport {
 
 using Progress = std::function<void(const std::string&)>;
 
+// Where a fill stands between two settling chunks: with the Simulation's own checkpoint, enough to
+// continue it bit for bit after a kill (run_silo writes both into checkpoint.bin).
+struct FillProgress {
+  std::size_t segment = 0;  // the segment being filled (0 = H1)
+  int phase = 0;            // 0: not inserted yet; 1: settling; 2: cut at its top, settling again
+  SegmentReport seg;        // the segment being filled, so far
+  double start = 0.0;       // top of the bed before this segment (m)
+  double settle_t0 = 0.0;   // simulated time when the current settling began (s)
+  double min_time = 0.0;    // the current settling's shortest duration (s)
+  int below = 0;            // consecutive checks below the kinetic-energy threshold
+  FillReport report;        // the segments done, and the warnings so far
+  std::vector<std::uint64_t> first_id;  // first particle id of each segment begun
+  std::uint64_t rng = 0;                // the random generator's state
+
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r);
+};
+
+// Called between settling chunks (every 2 ms of simulated time) with the fill's progress; the
+// caller decides whether to checkpoint it, and may throw to stop the fill.
+using FillCheckpoint = std::function<void(const FillProgress&)>;
+
 // Fills `sim` (which already holds the silo walls with the valve closed). `segment_coal` gives
-// the coal of each filled segment, bottom first.
+// the coal of each filled segment, bottom first. With `from`, continues an interrupted fill (sim
+// loaded from the same checkpoint).
 FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& segment_coal,
-                     Random& rng, const Progress& progress);
+                     Random& rng, const Progress& progress, const FillCheckpoint& checkpoint = {},
+                     const FillProgress* from = nullptr);
 
 // Kinetic energy (translational + rotational) per particle (J).
 double kinetic_energy_per_particle(const Simulation& sim);

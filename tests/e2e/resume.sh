@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# End-to-end (issue 5): a run killed with SIGKILL in the middle of its discharge and resumed gives
-# outlet.csv, fill.csv, lost.csv, the probe CSVs and the final state bit for bit equal to an
-# uninterrupted run, also when the checkpoints come by wall-clock time; SIGINT stops a run within
-# a second with a checkpoint and a message, and it resumes; a changed case file is refused on
-# resume unless --force.
+# End-to-end (issues 5 and 18): a run killed with SIGKILL in the middle of its discharge, or in its
+# fill, and resumed gives outlet.csv, fill.csv, lost.csv, the probe CSVs and the final state bit for
+# bit equal to an uninterrupted run, also when the checkpoints come by wall-clock time; SIGINT
+# stops a run within a second with a checkpoint and a message (in the fill too), and it resumes;
+# a changed case file is refused on resume unless --force.
 set -u
 bin=$1
 src=$2
@@ -17,11 +17,20 @@ case=$src/tests/data/small_silo.toml
 args=(--threads 1 --no-report --set simulation.steps_per_collision=100 --set silo.outlet_diameter_mm=32
       --set simulation.checkpoint_interval=0.01 --set probes.every=200)
 
-# Waits until DIR/checkpoint.bin exists (the discharge has begun), then a little longer.
+# Waits until DIR/fill.csv exists (the fill is done, the discharge begins), then a little longer.
 wait_for_discharge() {
-  for _ in $(seq 1 600); do
-    [ -f "$1/checkpoint.bin" ] && { sleep "$2"; return 0; }
+  for _ in $(seq 1 900); do
+    [ -f "$1/fill.csv" ] && { sleep "$2"; return 0; }
     sleep 0.1
+  done
+  return 1
+}
+# Waits until the fill has written a checkpoint (checkpoint.bin before fill.csv).
+wait_for_fill_checkpoint() {
+  for _ in $(seq 1 900); do
+    [ -f "$1/fill.csv" ] && return 1
+    [ -f "$1/checkpoint.bin" ] && return 0
+    sleep 0.05
   done
   return 1
 }
@@ -58,6 +67,44 @@ grep -q '"complete" : true' "$work/b/summary.json" || bad "resumed run: summary.
 [ ! -e "$work/b/checkpoint.bin" ] || bad "a complete run keeps no checkpoint"
 "$bin" run --resume "$work/b" > /dev/null 2> "$work/b3.err"
 [ $? -eq 2 ] && grep -q "nothing to resume" "$work/b3.err" || bad "resuming a complete run: $(cat "$work/b3.err")"
+
+# SIGKILL during the fill (issue 18, item 3): the fill's checkpoint resumes it, and the run ends
+# bit for bit as the uninterrupted one, fill.csv included.
+"$bin" run "$case" --out "$work/f" "${args[@]}" > "$work/f.log" 2>&1 &
+pid=$!
+wait_for_fill_checkpoint "$work/f" || bad "run f wrote no checkpoint during its fill"
+sleep 0.3
+kill -9 $pid
+wait $pid 2>/dev/null
+[ -f "$work/f/fill.csv" ] && bad "run f finished its fill before it was killed (make it longer)"
+"$bin" run --resume "$work/f" > "$work/f2.log" 2>&1 || bad "resume of f exited $?: $(tail -2 "$work/f2.log")"
+grep -q "resumed the fill in segment H" "$work/f2.log" || bad "f did not resume its fill: $(head -3 "$work/f2.log")"
+for f in fill.csv outlet.csv lost.csv final_state.bin probe_level.csv probe_coordination.csv; do
+  cmp -s "$work/a/$f" "$work/f/$f" || bad "killed in the fill + resumed: $f differs from the uninterrupted run"
+done
+# SIGINT during the fill: a checkpoint and a message, exit 130.
+"$bin" run "$case" --out "$work/g" "${args[@]}" > "$work/g.log" 2>&1 &
+pid=$!
+wait_for_fill_checkpoint "$work/g" || bad "run g wrote no checkpoint during its fill"
+kill -INT $pid
+wait $pid
+rc=$?
+[ $rc -eq 130 ] || bad "SIGINT in the fill: exit code $rc, expected 130"
+grep -q "interrupted during the fill; checkpoint written" "$work/g.log" || bad "SIGINT in the fill: $(tail -2 "$work/g.log")"
+"$bin" bench --from "$work/g" --steps 5 > /dev/null 2> "$work/g_from.err"
+[ $? -eq 2 ] && grep -q "stopped during its fill" "$work/g_from.err" || bad "bench --from a fill: $(cat "$work/g_from.err")"
+
+# A truncated checkpoint, and one of another format version, are refused with one line (exit 2).
+cp -r "$work/g" "$work/t"
+truncate -s -100 "$work/t/checkpoint.bin"
+"$bin" run --resume "$work/t" > /dev/null 2> "$work/t.err"
+[ $? -eq 2 ] && [ "$(wc -l < "$work/t.err")" -eq 1 ] && grep -q "truncated" "$work/t.err" ||
+  bad "truncated checkpoint: $(cat "$work/t.err")"
+cp "$work/g/checkpoint.bin" "$work/t/checkpoint.bin"
+printf '\x07' | dd of="$work/t/checkpoint.bin" bs=1 seek=8 conv=notrunc 2> /dev/null  # version 7
+"$bin" run --resume "$work/t" > /dev/null 2> "$work/t.err"
+[ $? -eq 2 ] && [ "$(wc -l < "$work/t.err")" -eq 1 ] && grep -q "format version 7" "$work/t.err" ||
+  bad "checkpoint of another version: $(cat "$work/t.err")"
 
 # Checkpoints by wall-clock time alone (none by simulated time): a SIGKILL 2 s into the discharge
 # resumes from after t = 0, and the checkpoints, taken at steps that depend on the machine's

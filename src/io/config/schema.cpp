@@ -62,18 +62,17 @@ const std::vector<Section>& sections() {
                .at_least(0)
                .at_most(10),
            F::number("checkpoint_interval",
-                     "simulated time between checkpoints of a silo "
-                     "discharge (checkpoint.bin; also written on SIGINT/SIGTERM); 0 = only on a "
-                     "signal",
+                     "simulated time between checkpoints of a silo run, "
+                     "its fill and its discharge (checkpoint.bin; also written on SIGINT/SIGTERM); "
+                     "0 = only on a signal",
                      "s")
                .with_default(10)
                .at_least(0)
                .at_most(1e6),
            F::number(
                "checkpoint_wall_interval",
-               "wall-clock time between checkpoints of a silo discharge, whichever of the two "
-               "comes first (a discharge killed without a signal loses about this at most; the "
-               "fill is not checkpointed); 0 = off",
+               "wall-clock time between checkpoints of a silo run, whichever of the two comes "
+               "first (a run killed without a signal loses about this at most); 0 = off",
                "s")
                .with_default(600)
                .at_least(0)
