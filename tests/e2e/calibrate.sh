@@ -31,7 +31,7 @@ for _ in $(seq 1 1200); do
   ls "$work/cal/runs/"*/checkpoint.bin > /dev/null 2>&1 && break
   sleep 0.05
 done
-ls "$work/cal/runs/"*/checkpoint.bin > /dev/null 2>&1 || bad "no evaluation reached its discharge"
+ls "$work/cal/runs/"*/checkpoint.bin > /dev/null 2>&1 || bad "no evaluation wrote a checkpoint"
 { kill -9 $pid; wait $pid; } 2>/dev/null
 sleep 0.5
 pgrep -f -- "--out $work/cal/runs/" > /dev/null && bad "a run outlived the killed calibration"

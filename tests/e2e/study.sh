@@ -2,8 +2,9 @@
 # End-to-end (issue 16): `silodem study` runs 3 values x 2 seeds of a shortened small-silo case to
 # the end. Killed with SIGKILL in a run's discharge, then in a run's fill, then stopped with
 # SIGTERM, and started again each time, it leaves the finished runs alone, resumes the one killed
-# in its discharge from its checkpoint (with the same result as an uninterrupted run), starts the
-# one killed in its fill again, and ends; no child outlives a killed study. It writes study.csv
+# in its discharge from its checkpoint (with the same result as an uninterrupted run), continues
+# the one killed in its fill (from its fill checkpoint, or from the start if it had none yet), and
+# ends; no child outlives a killed study. It writes study.csv
 # with one row per run and the metric columns, the figures and report.html.
 set -u
 bin=$1
@@ -46,11 +47,11 @@ grep -q "outlet_diamter_mm" "$work/bad.err" || bad "the error does not name the 
 pid=$!
 third="$work/s/runs/outlet=34.0_seed=1"
 fourth="$work/s/runs/outlet=34.0_seed=2"
-for _ in $(seq 1 1200); do
-  [ -f "$third/checkpoint.bin" ] && break
+for _ in $(seq 1 1200); do  # fill.csv: the fill is done; the discharge's checkpoint follows
+  [ -f "$third/fill.csv" ] && sleep 0.3 && break
   sleep 0.05
 done
-[ -f "$third/checkpoint.bin" ] || bad "the third run never reached its discharge: $(tail -3 "$work/s1.log")"
+[ -f "$third/fill.csv" ] || bad "the third run never reached its discharge: $(tail -3 "$work/s1.log")"
 { kill -9 $pid; wait $pid; } 2>/dev/null
 sleep 0.5
 pgrep -f -- "--out $work/s/runs/" > /dev/null && bad "a child run outlived the killed study"
@@ -60,16 +61,16 @@ grep -q '"complete" : false' "$third/summary.json" || bad "the third run finishe
 # What the finished runs look like now: no later start may touch them.
 stat -c '%Y %i' "$work/s/runs/outlet=30.0_seed="{1,2}/summary.json > "$work/before.txt"
 
-# 2. Start again, and kill it while the fourth run is in its fill (no checkpoint yet).
+# 2. Start again, and kill it while the fourth run is in its fill.
 "$bin" study "$work/study.toml" --out "$work/s" --threads 1 --jobs 1 > "$work/s2.log" 2>&1 &
 pid=$!
 for _ in $(seq 1 1200); do
-  [ -f "$fourth/summary.json" ] && [ ! -f "$fourth/checkpoint.bin" ] && break
+  [ -f "$fourth/summary.json" ] && [ ! -f "$fourth/fill.csv" ] && break
   sleep 0.05
 done
 { kill -9 $pid; wait $pid; } 2>/dev/null
 sleep 0.5
-[ -f "$fourth/summary.json" ] && [ ! -f "$fourth/checkpoint.bin" ] ||
+[ -f "$fourth/summary.json" ] && [ ! -f "$fourth/fill.csv" ] ||
   bad "the fourth run was not caught in its fill"
 grep -q '"complete" : true' "$third/summary.json" || bad "the third run was not resumed to its end"
 
