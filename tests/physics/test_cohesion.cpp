@@ -180,5 +180,62 @@ TEST(Cohesion, TC4_FrictionSwitch) {
   EXPECT_LT(slip_force(true), 0.02);
 }
 
+// Luding's law through the engine (normal_luding.hpp): a pair (or a particle on a wall) pressed
+// together with F, then pulled with P, both ramped slowly. The largest overlap is the contact's
+// history, kept in the neighbour list from step to step; the contact holds while P is below
+// lambda F = kc (k2 - k1) / ((k2 + kc) k1) F (Luding 2008, Eq. 6) and lets go above it.
+double luding_press_and_pull(double press, double pull, bool wall) {
+  test::Laws l;
+  l.normal = "luding";
+  l.normal_p = {{"stiffness", 1e3},
+                {"unloading_stiffness", 5e3},
+                {"adhesion_stiffness", 2e3},
+                {"restitution", 0.3}};
+  ContactModel model = test::model_of(l);
+  const double t_col =
+      wall ? model.wall_collision_time(0, kM, kR) : model.pair_collision_time(0, 0, kM, kM, kR, kR);
+  SimulationSettings s;
+  s.dt = t_col / 50.0;
+  s.gravity = {};
+  s.threads = 1;
+  Simulation sim(std::move(model), s);
+  auto& p = sim.particles();
+  if (wall) {
+    sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{1, 0, 0}));
+    p.add({kR, 0, 0}, {}, {}, kR, kM, 0);
+  } else {
+    p.add({0, 0, 0}, {}, {}, kR, kM, 0);
+    p.add({2 * kR, 0, 0}, {}, {}, kR, kM, 0);
+  }
+  const double ramp = 200 * t_col;  // press: ramp and hold; then to -pull: ramp and hold
+  sim.add_hook({"press and pull", Phase::StepBegin, 1, [&](Simulation& sm) {
+                  const double t = sm.time();
+                  const double f = t < 2 * ramp   ? press * std::min(1.0, t / ramp)
+                                   : t < 3 * ramp ? press - (press + pull) * (t - 2 * ramp) / ramp
+                                                  : -pull;
+                  auto& q = sm.particles();  // f > 0 presses
+                  if (wall) {
+                    q.f_ext[0] = {-f, 0, 0};
+                  } else {
+                    q.f_ext[0] = {f, 0, 0};
+                    q.f_ext[1] = {-f, 0, 0};
+                  }
+                }});
+  sim.run_until(5 * ramp);
+  return wall ? kR - p.x[0].x : 2 * kR - (p.x[1].x - p.x[0].x);
+}
+
+TEST(Cohesion, LudingContactHoldsUpToTheFractionOfTheLoadItCarried) {
+  const double lambda = 2e3 * (5e3 - 1e3) / ((5e3 + 2e3) * 1e3);  // 8/7
+  for (bool wall : {false, true}) {
+    for (double press : {0.1, 0.4}) {
+      EXPECT_GT(luding_press_and_pull(press, 0.95 * lambda * press, wall), 0.0)
+          << press << (wall ? " wall" : " pair");
+      EXPECT_LT(luding_press_and_pull(press, 1.05 * lambda * press, wall), 0.0)
+          << press << (wall ? " wall" : " pair");
+    }
+  }
+}
+
 }  // namespace
 }  // namespace silodem
