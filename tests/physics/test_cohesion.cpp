@@ -22,39 +22,53 @@ test::Laws cohesive(double kn, double e = 0.1) {
   return l;
 }
 
+// Two particles of radius kR and mass kM along x (or one on the plane x = 0) overlapping by
+// `overlap`, without gravity, on one thread, at dt = t_col / 50 of the pair (or wall) contact.
+struct TwoBodies {
+  std::unique_ptr<Simulation> sim;
+  double t_col = 0.0;
+  bool wall = false;
+  // Forces +f on the bodies apart (f < 0 presses them together).
+  void pull(double f) {
+    auto& q = sim->particles();
+    q.f_ext[0] = {wall ? f : -f, 0, 0};
+    if (!wall) q.f_ext[1] = {f, 0, 0};
+  }
+  double overlap() const {
+    const auto& p = sim->particles();
+    return wall ? kR - p.x[0].x : 2 * kR - (p.x[1].x - p.x[0].x);
+  }
+};
+TwoBodies two_bodies(ContactModel model, bool wall, double overlap) {
+  TwoBodies b;
+  b.wall = wall;
+  b.t_col =
+      wall ? model.wall_collision_time(0, kM, kR) : model.pair_collision_time(0, 0, kM, kM, kR, kR);
+  SimulationSettings s;
+  s.dt = b.t_col / 50.0;
+  s.gravity = {};
+  s.threads = 1;
+  b.sim = std::make_unique<Simulation>(std::move(model), s);
+  auto& p = b.sim->particles();
+  if (wall) {
+    b.sim->add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{1, 0, 0}));
+    p.add({kR - overlap, 0, 0}, {}, {}, kR, kM, 0);
+  } else {
+    p.add({0, 0, 0}, {}, {}, kR, kM, 0);
+    p.add({2 * kR - overlap, 0, 0}, {}, {}, kR, kM, 0);
+  }
+  return b;
+}
+
 // Two bonded particles (or one bonded to a wall) pulled apart by +-P, ramped over 200 t_col and
 // held for 200 t_col. Returns the final overlap (< 0: separated).
 double pull_apart(double kn, double p_over_f, bool wall) {
-  ContactModel model = test::model_of(cohesive(kn), {kFL});
-  const double t_col =
-      wall ? model.wall_collision_time(0, kM, kR) : model.pair_collision_time(0, 0, kM, kM, kR, kR);
-  SimulationSettings s;
-  s.dt = t_col / 50.0;
-  s.gravity = {};
-  s.threads = 1;
-  Simulation sim(std::move(model), s);
-  auto& p = sim.particles();
-  const double d_eq = kFL / kn;
-  if (wall) {
-    sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{1, 0, 0}));
-    p.add({kR - d_eq, 0, 0}, {}, {}, kR, kM, 0);
-  } else {
-    p.add({0, 0, 0}, {}, {}, kR, kM, 0);
-    p.add({2 * kR - d_eq, 0, 0}, {}, {}, kR, kM, 0);
-  }
-  const double target = p_over_f * kFL, ramp = 200 * t_col;
-  sim.add_hook({"pull", Phase::StepBegin, 1, [&](Simulation& sm) {
-                  const double f = target * std::min(1.0, sm.time() / ramp);
-                  auto& q = sm.particles();
-                  if (wall) {
-                    q.f_ext[0] = {f, 0, 0};
-                  } else {
-                    q.f_ext[0] = {-f, 0, 0};
-                    q.f_ext[1] = {f, 0, 0};
-                  }
-                }});
-  sim.run_until(ramp + 200 * t_col);
-  return wall ? kR - p.x[0].x : 2 * kR - (p.x[1].x - p.x[0].x);
+  TwoBodies b = two_bodies(test::model_of(cohesive(kn), {kFL}), wall, kFL / kn);
+  const double target = p_over_f * kFL, ramp = 200 * b.t_col;
+  b.sim->add_hook({"pull", Phase::StepBegin, 1,
+                   [&](Simulation& sm) { b.pull(target * std::min(1.0, sm.time() / ramp)); }});
+  b.sim->run_until(ramp + 200 * b.t_col);
+  return b.overlap();
 }
 
 TEST(Cohesion, TC1_PullOffIsFLIndependentOfStiffness) {
@@ -191,38 +205,18 @@ double luding_press_and_pull(double press, double pull, bool wall) {
                 {"unloading_stiffness", 5e3},
                 {"adhesion_stiffness", 2e3},
                 {"restitution", 0.3}};
-  ContactModel model = test::model_of(l);
-  const double t_col =
-      wall ? model.wall_collision_time(0, kM, kR) : model.pair_collision_time(0, 0, kM, kM, kR, kR);
-  SimulationSettings s;
-  s.dt = t_col / 50.0;
-  s.gravity = {};
-  s.threads = 1;
-  Simulation sim(std::move(model), s);
-  auto& p = sim.particles();
-  if (wall) {
-    sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{1, 0, 0}));
-    p.add({kR, 0, 0}, {}, {}, kR, kM, 0);
-  } else {
-    p.add({0, 0, 0}, {}, {}, kR, kM, 0);
-    p.add({2 * kR, 0, 0}, {}, {}, kR, kM, 0);
-  }
-  const double ramp = 200 * t_col;  // press: ramp and hold; then to -pull: ramp and hold
-  sim.add_hook({"press and pull", Phase::StepBegin, 1, [&](Simulation& sm) {
-                  const double t = sm.time();
-                  const double f = t < 2 * ramp   ? press * std::min(1.0, t / ramp)
-                                   : t < 3 * ramp ? press - (press + pull) * (t - 2 * ramp) / ramp
-                                                  : -pull;
-                  auto& q = sm.particles();  // f > 0 presses
-                  if (wall) {
-                    q.f_ext[0] = {-f, 0, 0};
-                  } else {
-                    q.f_ext[0] = {f, 0, 0};
-                    q.f_ext[1] = {-f, 0, 0};
-                  }
-                }});
-  sim.run_until(5 * ramp);
-  return wall ? kR - p.x[0].x : 2 * kR - (p.x[1].x - p.x[0].x);
+  TwoBodies b = two_bodies(test::model_of(l), wall, 0.0);
+  const double ramp = 200 * b.t_col;  // press: ramp and hold; then to -pull: ramp and hold
+  b.sim->add_hook({"press and pull", Phase::StepBegin, 1, [&](Simulation& sm) {
+                     const double t = sm.time();
+                     const double f = t < 2 * ramp ? press * std::min(1.0, t / ramp)
+                                      : t < 3 * ramp
+                                          ? press - (press + pull) * (t - 2 * ramp) / ramp
+                                          : -pull;
+                     b.pull(-f);  // f > 0 presses
+                   }});
+  b.sim->run_until(5 * ramp);
+  return b.overlap();
 }
 
 TEST(Cohesion, LudingContactHoldsUpToTheFractionOfTheLoadItCarried) {
