@@ -24,9 +24,12 @@ ContactTally Simulation::contact_tally() const {
       const std::size_t j = std::size_t(list_.partner[e]);
       const ContactLaw& law = model_.pair(p_.material[i], p_.material[j]);
       const double reach = (p_.radius[i] + p_.radius[j]) * (1.0 + law.reach_over_d);
-      if (norm2(p_.x[i] - p_.x[j]) >= reach * reach) continue;
+      const Vec3 d = separation(i, j);
+      if (norm2(d) >= reach * reach) continue;
       ContactState copy = list_.state(std::size_t(e));
-      const ContactResult r = evaluate_contact(law, pair_geometry(bi, body(p_, j)), copy, s_.dt);
+      BodyState bj = body(p_, j);
+      if (s_.periodic.any()) bj.x = p_.x[i] - d;  // the image next to i
+      const ContactResult r = evaluate_contact(law, pair_geometry(bi, bj), copy, s_.dt);
       if (r.touching) ++t.particle_contacts[i], ++t.particle_contacts[j];
       t.cohesion_sum[i] += r.cohesion;
       t.cohesion_sum[j] += r.cohesion;
@@ -60,7 +63,9 @@ EnergyBudget Simulation::energy() const {
     e.gravitational += p_.mass[i] * g * dot(p_.x[i], up);
     for (int k = list_.offset[i]; k < list_.offset[i + 1]; ++k) {
       const std::size_t j = std::size_t(list_.partner[k]);
-      const ContactGeometry gc = pair_geometry(bi, body(p_, j));
+      BodyState bj = body(p_, j);
+      if (s_.periodic.any()) bj.x = p_.x[i] - separation(i, j);  // the image next to i
+      const ContactGeometry gc = pair_geometry(bi, bj);
       if (gc.overlap > 0)
         e.elastic += normal_elastic_energy(model_.pair(p_.material[i], p_.material[j]), gc,
                                            list_.state(std::size_t(k)));

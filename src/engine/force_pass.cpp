@@ -58,6 +58,8 @@ void Simulation::pair_forces(int tid, double guard) {
   // changes nothing on the silo bed: BENCHMARKS.md, "What the engine does to be fast").
   // Prefetches never fault.
   const std::size_t n_pairs = list_.partner.size();
+  const PeriodicBox& box = s_.periodic;
+  const bool pbc = box.any();
   constexpr std::size_t PF = 16;
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
@@ -96,7 +98,8 @@ void Simulation::pair_forces(int tid, double guard) {
         __builtin_prefetch(&p_.material[jp]);
       }
       const double reach = (ri + p_.radius[uj]) * w.reach;
-      const int in = norm2(xi - p_.x[uj]) >= reach * reach ? 0 : 1;  // NaN counts as in range
+      const Vec3 d = pbc ? box.image(xi - p_.x[uj]) : xi - p_.x[uj];
+      const int in = norm2(d) >= reach * reach ? 0 : 1;  // NaN counts as in range
       w.hits[std::size_t(n_hit)] = e;
       w.misses[std::size_t(n_miss)] = e;
       n_hit += in;
@@ -111,7 +114,8 @@ void Simulation::pair_forces(int tid, double guard) {
       const double rj = p_.radius[uj];
       const int set = mi * nm + p_.material[uj];
       LaneSet& ls = w.sets[std::size_t(set)];
-      const int lane = ls.add<H>(xi - p_.x[uj], vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj,
+      const Vec3 d = pbc ? box.image(xi - p_.x[uj]) : xi - p_.x[uj];
+      const int lane = ls.add<H>(d, vi, wi, ri, m_i, inv_ii, p_.v[uj], p_.omega[uj], rj,
                                  p_.mass[uj], p_.inv_inertia[uj], list_.state_n<H>(std::size_t(e)));
       w.entries[w.count++] = {int(i), j, e, set, lane};
       // The flush adds into j's force and torque: requested now, they have arrived by then (a
@@ -135,6 +139,8 @@ void Simulation::wall_forces(int tid, double guard) {
   const double dt = s_.dt;
   auto& fb = f_buf_[std::size_t(tid)];
   auto& tb = t_buf_[std::size_t(tid)];
+  auto& wf = wall_f_buf_[std::size_t(tid)];
+  std::fill(wf.begin(), wf.end(), Vec3{});
 #pragma omp for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     if (list_.wall_offset[i] == list_.wall_offset[i + 1]) continue;
@@ -153,6 +159,7 @@ void Simulation::wall_forces(int tid, double guard) {
           list_.set_wall_state(e, st);
           fb[i] += r.force_i;
           tb[i] += r.torque_i;
+          wf[std::size_t(list_.wall[e])] -= r.force_i;
         },
         [&](std::size_t e) { list_.set_wall_state(e, ContactState{}); });
   }
@@ -166,6 +173,8 @@ void Simulation::compute_forces(bool finish_step) {
     f_buf_.resize(std::size_t(nt));
     t_buf_.resize(std::size_t(nt));
   }
+  wall_f_buf_.resize(std::size_t(nt));
+  for (auto& b : wall_f_buf_) b.resize(walls_.size());
   flags_.assign(std::size_t(nt), OverlapFlag{});
   if (windows_.size() != std::size_t(nt)) {
     const int nm = model_.materials();
@@ -222,6 +231,10 @@ void Simulation::compute_forces(bool finish_step) {
       p_.t[i] = t;
     }
   }
+  wall_force_.assign(walls_.size(), Vec3{});
+  for (int k = 0; k < team; ++k)
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+      wall_force_[w] += wall_f_buf_[std::size_t(k)][w];
   for (const auto& fl : flags_)
     if (fl.i >= 0) overlap_stop(std::size_t(fl.i), fl.j, fl.overlap);
 }

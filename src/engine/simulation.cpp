@@ -30,6 +30,7 @@ Simulation::Simulation(ContactModel model, SimulationSettings settings)
   omp_set_dynamic(0);  // exactly s_.threads threads: the force summation order depends on it
 #endif
   list_.threads = s_.threads;
+  list_.set_periodic(s_.periodic);
   // One [contact.particle_particle] and one [contact.particle_wall] section: every coal pair has
   // the laws (and so the history layout) of pair (0, 0), every wall contact those of wall 0.
   if (model_.materials() > 0) list_.set_layouts(model_.pair(0, 0).layout, model_.wall(0).layout);
@@ -70,13 +71,14 @@ void Simulation::step() {
   // rounding of the predictor (half an ulp of |v_half + a_old dt/2|).
   // The same pass checks whether some particle has moved far enough to need a new list.
   const bool check = list_.built_for(n);
+  const bool wrap = s_.periodic.any();
   int moved = check ? 0 : 1;
 #pragma omp parallel for schedule(static) reduction(| : moved) num_threads(s_.threads) if (n > 256)
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 dv = p_.f[i] * (half * p_.inv_mass[i]);
     const Vec3 dw = p_.t[i] * (half * p_.inv_inertia[i]);
     const Vec3 v_half = p_.v[i] + dv;
-    const Vec3 x = p_.x[i] + v_half * dt;
+    const Vec3 x = wrap ? s_.periodic.wrap(p_.x[i] + v_half * dt) : p_.x[i] + v_half * dt;
     p_.x[i] = x;
     p_.v[i] = v_half + dv;
     const Vec3 w_half = p_.omega[i] + dw;

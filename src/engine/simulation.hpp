@@ -15,6 +15,7 @@
 #include "engine/neighbor/verlet_list.hpp"
 #include "engine/pair_batch.hpp"
 #include "engine/particle_store.hpp"
+#include "engine/periodic.hpp"
 #include "engine/walls/wall.hpp"
 #include "model/contact/contact_model.hpp"
 
@@ -32,6 +33,9 @@ struct SimulationSettings {
   // Reorder the particles along a Morton (Z-order) curve before every `reorder_every`-th
   // neighbour-list build (0 = never), so that neighbours sit close in memory.
   int reorder_every = 0;
+  // Periodic boundaries (engine/periodic.hpp): positions wrap into the box along its periodic
+  // axes and pairs interact through the nearest image.
+  PeriodicBox periodic;
 };
 
 // What each particle's contacts do right now, for observers (probes, VTK output). Computed on
@@ -60,6 +64,14 @@ class Simulation {
   void set_gravity(const Vec3& g) { s_.gravity = g; }
   void add_wall(std::unique_ptr<Wall> w);
   const WallList& walls() const { return walls_; }
+  // A wall to move (Wall::translate, set_velocity: a driven plate). A wall moved by more than a
+  // quarter of the skin since the last list build needs request_rebuild().
+  Wall& wall(std::size_t index) { return *walls_.at(index); }
+  // The force the particles exert on wall `index` in the last force pass (N; the sum of its
+  // contacts' forces, the reaction of what it does to them).
+  Vec3 wall_force(std::size_t index) const {
+    return index < wall_force_.size() ? wall_force_[index] : Vec3{};
+  }
   // Switch a wall on or off (e.g. open a valve); its contacts end with it.
   void set_wall_enabled(std::size_t index, bool on);
   void add_hook(Hook h) { hooks_.push_back(std::move(h)); }
@@ -107,6 +119,11 @@ class Simulation {
   void reorder_spatially();
   void run_hooks(Phase ph);
   void check_state() const;
+  // x_i - x_j through the nearest image (the plain difference without periodic boundaries).
+  Vec3 separation(std::size_t i, std::size_t j) const {
+    const Vec3 d = p_.x[i] - p_.x[j];
+    return s_.periodic.any() ? s_.periodic.image(d) : d;
+  }
   [[noreturn]] void overlap_stop(std::size_t i, long j, double overlap) const;
   std::string likely_cause(std::size_t i) const;
 
@@ -117,6 +134,8 @@ class Simulation {
   VerletList list_;
   std::vector<Hook> hooks_;
   std::vector<std::vector<Vec3>> f_buf_, t_buf_;  // per-thread force/torque buffers
+  std::vector<std::vector<Vec3>> wall_f_buf_;     // per thread: force on each wall
+  std::vector<Vec3> wall_force_;                  // their sum, in thread order
   // Per thread: the index range its pair loop wrote into its buffers this step.
   std::vector<std::pair<std::size_t, std::size_t>> written_;
   std::vector<PairWindow> windows_;  // per thread: the pairs in flight (engine/pair_batch.hpp)

@@ -6,7 +6,8 @@
 
 namespace silodem {
 
-void CellGrid::build(const std::vector<Vec3>& x, double min_cell, std::size_t max_cells) {
+void CellGrid::build(const std::vector<Vec3>& x, double min_cell, std::size_t max_cells,
+                     const PeriodicBox& box) {
   Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
   for (const Vec3& p : x) {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
@@ -36,12 +37,26 @@ void CellGrid::build(const std::vector<Vec3>& x, double min_cell, std::size_t ma
     quantile_box(&Vec3::y, lo.y, hi.y);
     quantile_box(&Vec3::z, lo.z, hi.z);
   }
+  // A periodic axis: the grid spans the period with a whole number of cells, none shorter than
+  // cell_ (so the 27 cells still hold every neighbour).
+  double* lo_a[3] = {&lo.x, &lo.y, &lo.z};
+  for (int a = 0; a < 3; ++a) {
+    periodic_[a] = box.on[a];
+    if (box.on[a]) *lo_a[a] = box.lo[a];
+  }
   lo_ = lo;
   const Vec3 ext = hi - lo;
+  const double ext_a[3] = {ext.x, ext.y, ext.z};
   for (;;) {
-    dims_ = {std::max(1, static_cast<int>(ext.x / cell_) + 1),
-             std::max(1, static_cast<int>(ext.y / cell_) + 1),
-             std::max(1, static_cast<int>(ext.z / cell_) + 1)};
+    for (int a = 0; a < 3; ++a) {
+      if (periodic_[a]) {
+        dims_[std::size_t(a)] = std::max(1, static_cast<int>(box.len[a] / cell_));
+        edge_[a] = box.len[a] / dims_[std::size_t(a)];
+      } else {
+        dims_[std::size_t(a)] = std::max(1, static_cast<int>(ext_a[a] / cell_) + 1);
+        edge_[a] = cell_;
+      }
+    }
     const double n = double(dims_[0]) * dims_[1] * dims_[2];
     if (n <= double(max_cells)) break;
     cell_ *= std::cbrt(n / double(max_cells)) * 1.01;
@@ -62,8 +77,8 @@ void CellGrid::build(const std::vector<Vec3>& x, double min_cell, std::size_t ma
 
 std::array<int, 3> CellGrid::cell_of(const Vec3& p) const {
   auto clampi = [](double v, int n) { return std::clamp(static_cast<int>(v), 0, n - 1); };
-  return {clampi((p.x - lo_.x) / cell_, dims_[0]), clampi((p.y - lo_.y) / cell_, dims_[1]),
-          clampi((p.z - lo_.z) / cell_, dims_[2])};
+  return {clampi((p.x - lo_.x) / edge_[0], dims_[0]), clampi((p.y - lo_.y) / edge_[1], dims_[1]),
+          clampi((p.z - lo_.z) / edge_[2], dims_[2])};
 }
 
 }  // namespace silodem

@@ -3,6 +3,10 @@
 
 #include "model/contact/registry.hpp"
 
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
@@ -112,7 +116,13 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   double r_max = 0.0;
   for (double r : p.radius) r_max = std::max(r_max, r);
   const double cut_max = 2.0 * r_max * (1.0 + reach_over_d) + skin;
-  grid_.build(p.x, cut_max, 8 * n + 64);
+  for (int a = 0; a < 3; ++a)
+    if (box_.on[a] && box_.len[a] < 2.0 * cut_max)
+      throw SimulationError(fmt::format(
+          "the periodic box is {:.4g} m long along {}: it must be at least twice the neighbour "
+          "cut-off, 2 x {:.4g} m (largest diameter with the cohesion range, plus the skin)",
+          box_.len[a], "xyz"[a], cut_max));
+  grid_.build(p.x, cut_max, 8 * n + 64, box_);
 
   // One pass over the grid: each thread lists the partners of its share of i, each i's sorted
   // (cell order is arbitrary; index order is canonical), into its own buffer; the buffers then
@@ -138,7 +148,8 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
       grid_.for_each_near(xi, [&](int j) {
         if (j <= int(i)) return;
         const double cut = (ri + p.radius[j]) * (1.0 + reach_over_d) + skin;
-        if (norm2(xi - p.x[j]) < cut * cut) near.push_back(j);
+        const Vec3 d = xi - p.x[j];
+        if (norm2(box_.any() ? box_.image(d) : d) < cut * cut) near.push_back(j);
       });
       std::sort(near.begin(), near.end());
       offset[i + 1] = int(near.size());

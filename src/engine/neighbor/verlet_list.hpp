@@ -12,6 +12,7 @@
 
 #include "engine/neighbor/cell_grid.hpp"
 #include "engine/particle_store.hpp"
+#include "engine/periodic.hpp"
 #include "engine/walls/wall.hpp"
 #include "model/contact/contact_history.hpp"
 
@@ -26,8 +27,14 @@ class VerletList {
   // integrator): rebuild when !built_for(n) or moved_far(i, x) for some particle.
   bool built_for(std::size_t n) const { return x_at_build_.size() == n; }
   bool moved_far(std::size_t i, const Vec3& x) const {
-    return norm2(x - x_at_build_[i]) > 0.25 * skin * skin;  // more than skin / 2
+    const Vec3 d = x - x_at_build_[i];
+    return norm2(box_.any() ? box_.image(d) : d) > 0.25 * skin * skin;  // more than skin / 2
   }
+  // Periodic boundaries (before the first build): pairs are found through the nearest image.
+  // build() throws SimulationError if a period is shorter than twice the longest cut-off, where
+  // one pair would have two images in range.
+  void set_periodic(const PeriodicBox& box) { box_ = box; }
+  const PeriodicBox& periodic() const { return box_; }
   // Keep the current history aside, by particle index (call before particles are removed or
   // reordered, then renumber() after). Checks that the particles are still the ones the list was
   // built for (throws std::logic_error if they were removed or reordered behind its back).
@@ -99,6 +106,7 @@ class VerletList {
   bool check_ids_ = false;      // ids_hash_ is known (false before a build and after load())
   std::vector<Vec3> x_at_build_;
   CellGrid grid_;
+  PeriodicBox box_;
 };
 
 }  // namespace silodem

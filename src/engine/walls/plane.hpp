@@ -10,6 +10,10 @@ class PlaneWall final : public Wall {
   PlaneWall(const Vec3& point, const Vec3& normal);
   bool near(const Vec3& c, double limit, WallHit& hit) const override;
   std::string describe() const override;
+  bool movable() const override { return true; }
+  void translate(const Vec3& d) override { p_ += d; }
+  const Vec3& point() const { return p_; }
+  const Vec3& normal() const { return n_; }
 
  private:
   Vec3 p_, n_;

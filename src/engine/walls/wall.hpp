@@ -3,6 +3,7 @@
 // distance. New shapes: one file in walls/ plus one line in walls/registry.cpp.
 #pragma once
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -28,9 +29,20 @@ class Wall {
     WallHit hit;
     return near(c, limit, hit);
   }
-  virtual Vec3 velocity() const { return {}; }
   virtual std::string describe() const = 0;
+  // A wall that can move (a driven plate, engine/plate.hpp) says so and moves by `d`; the others
+  // throw std::logic_error.
+  virtual bool movable() const { return false; }
+  virtual void translate(const Vec3& /*d*/) {
+    throw std::logic_error("this wall cannot move: " + describe());
+  }
+  // The velocity its contacts see (m/s); a wall that moves sets it as it moves.
+  Vec3 velocity() const { return velocity_; }
+  void set_velocity(const Vec3& v) { velocity_ = v; }
   bool enabled = true;  // a disabled wall (an opened valve) takes part in no contact
+
+ private:
+  Vec3 velocity_;
 };
 
 using WallList = std::vector<std::unique_ptr<Wall>>;
