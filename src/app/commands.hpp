@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -51,7 +52,23 @@ struct CalibrateOptions {
   std::vector<std::string> overrides;  // --set on every run
 };
 
+struct ShearTestOptions {
+  std::string case_path;
+  std::string out_dir;
+  double preshear_kpa = 9.0;
+  std::string normals;  // "7,6,5,4,3" (kPa); empty: the standard test's, scaled to the pre-shear
+  std::string coal;     // one coal by name; empty: each coal of the case
+  bool json = false;
+  int threads = 0;
+  std::uint64_t seed = 1;
+  double width = 10.0, height = 8.0;  // mean CG diameters
+  double inertial_number = 2e-3;
+  double preshear_strain = 0.5, represhear_strain = 0.2, failure_strain = 0.25;
+  std::vector<std::string> overrides;
+};
+
 int run_command(const RunOptions& o);
+int shear_test_command(const ShearTestOptions& o);
 int default_threads();  // the cores this process may use
 int study_command(const StudyOptions& o);
 int calibrate_command(const CalibrateOptions& o);

@@ -153,6 +153,48 @@ int main(int argc, char** argv) {
   cal_cmd->add_option("--set", cal.overrides,
                       "override a case-file value on every run (repeatable)");
 
+  app::ShearTestOptions shear;
+  auto* shear_cmd = cli.add_subcommand(
+      "shear-test",
+      "the FT-4 shear test (ASTM D7891) on each coal of a case with its contact model: yield "
+      "locus, C, phi, f_c, sigma_1, ffc, bulk density");
+  shear_cmd->add_option("case", shear.case_path, "case file (TOML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  shear_cmd->add_option("--out", shear.out_dir, "output directory (new or empty)")->required();
+  shear_cmd->add_option("--preshear", shear.preshear_kpa,
+                        "pre-shear normal stress, kPa (default 9)");
+  shear_cmd->add_option("--normal", shear.normals,
+                        "normal stresses of the failure points, kPa, comma separated (default "
+                        "7,6,5,4,3 at 9 kPa; scaled with --preshear)");
+  shear_cmd->add_option("--coal", shear.coal, "test only this coal (default: each)");
+  shear_cmd->add_flag("--json", shear.json, "print the results as JSON on stdout");
+  shear_cmd->add_option("--threads", shear.threads, "OpenMP threads (default: the case's)")
+      ->check(CLI::Range(0, 1024));
+  shear_cmd->add_option("--seed", shear.seed, "seed of the sample (default 1)");
+  shear_cmd->add_option("--width", shear.width, "cell side, mean CG diameters (default 10)")
+      ->check(CLI::Range(2.0, 1000.0));
+  shear_cmd
+      ->add_option("--height", shear.height, "sheared sample height, mean CG diameters (default 8)")
+      ->check(CLI::Range(2.0, 1000.0));
+  shear_cmd
+      ->add_option("--inertial-number", shear.inertial_number,
+                   "shear rate as the inertial number at the lowest stress (default 2e-3)")
+      ->check(CLI::Range(1e-6, 0.1));
+  shear_cmd
+      ->add_option("--preshear-strain", shear.preshear_strain,
+                   "strain of the first pre-shear (default 0.5)")
+      ->check(CLI::Range(0.01, 10.0));
+  shear_cmd
+      ->add_option("--represhear-strain", shear.represhear_strain,
+                   "strain of each later pre-shear (default 0.2)")
+      ->check(CLI::Range(0.01, 10.0));
+  shear_cmd
+      ->add_option("--failure-strain", shear.failure_strain,
+                   "strain of each shear to failure (default 0.25)")
+      ->check(CLI::Range(0.01, 10.0));
+  shear_cmd->add_option("--set", shear.overrides, "override a case-file value (repeatable)");
+
   auto* docs_cmd =
       cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
 
@@ -185,6 +227,7 @@ int main(int argc, char** argv) {
       if (cal.threads == 0) cal.threads = app::default_threads();
       return app::calibrate_command(cal);
     }
+    if (*shear_cmd) return app::shear_test_command(shear);
     if (*report_cmd) return app::report_command(report_dir);
     if (*bench_cmd) return app::bench_command(bench);
     if (*compare_cmd) return app::compare_command(compare_dirs, compare_out, compare_labels);

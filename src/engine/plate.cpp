@@ -14,13 +14,18 @@ Plate::Plate(Simulation& sim, std::size_t wall, const std::vector<std::size_t>& 
   const auto* plane = dynamic_cast<const PlaneWall*>(&sim.wall(wall));
   if (!plane) throw std::logic_error("Plate: the wall must be a plane");
   normal_ = plane->normal();
+  glue(sim, glued);
+}
+
+void Plate::glue(Simulation& sim, const std::vector<std::size_t>& glued) {
+  find_glued(sim);
   auto& p = sim.particles();
   for (std::size_t i : glued) {
     if (i >= p.size()) throw std::logic_error("Plate: no such particle");
     p.inv_mass[i] = 0.0;
     p.inv_inertia[i] = 0.0;
     p.omega[i] = Vec3{};
-    p.v[i] = Vec3{};
+    p.v[i] = velocity_;
     ids_.push_back(p.id[i]);
     index_.push_back(i);
   }

@@ -40,7 +40,9 @@ class Plate {
  public:
   // `wall` must be movable (Wall::movable) and a plane; `glued` are particle indices (they may
   // be reordered later: the plate follows their ids).
-  Plate(Simulation& sim, std::size_t wall, const std::vector<std::size_t>& glued);
+  Plate(Simulation& sim, std::size_t wall, const std::vector<std::size_t>& glued = {});
+  // Glues more particles to the plate (they stop and move with it from the next step).
+  void glue(Simulation& sim, const std::vector<std::size_t>& particles);
   void set_control(const PlateControl& c) { control_ = c; }
   const PlateControl& control() const { return control_; }
   void advance(Simulation& sim);

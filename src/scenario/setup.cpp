@@ -146,9 +146,6 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
   return r;
 }
 
-namespace {
-
-// Time step, gravity, skin (a fraction of the smallest CG diameter) and threads of a case.
 SimulationSettings settings_of(const Case& c, const CaseReport& report, double d_min,
                                int threads_override) {
   SimulationSettings s;
@@ -167,6 +164,8 @@ SimulationSettings settings_of(const Case& c, const CaseReport& report, double d
   }
   return s;
 }
+
+namespace {
 
 // The [[wall]] tables of a case.
 void add_case_walls(Simulation& sim, const Case& c) {

@@ -32,7 +32,6 @@ class MovingFloor final : public Wall {
     hit.distance = d;
     return true;
   }
-  Vec3 velocity() const override { return {0.0, 0.0, vz}; }
   std::string describe() const override { return "moving floor"; }
 };
 
@@ -89,8 +88,10 @@ JanssenRun run_janssen(int stages, int per_stage) {
   MovingFloor* floor = floor_owner.get();
   sim->add_wall(std::move(floor_owner));
   floor->vz = -0.01;
-  sim->add_hook(
-      {"floor", Phase::StepBegin, 1, [floor](Simulation& s) { floor->z = floor->vz * s.time(); }});
+  sim->add_hook({"floor", Phase::StepBegin, 1, [floor](Simulation& s) {
+                   floor->z = floor->vz * s.time();
+                   floor->set_velocity({0.0, 0.0, floor->vz});
+                 }});
   const auto in_cylinder = [&](const Vec3& x) { return std::hypot(x.x, x.y) < R - r - 0.02 * g.d; };
   const ParticleStore& p = sim->particles();
   Random rng(7);

@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: MIT
+// `silodem shear-test CASE --out DIR [--preshear KPA] [--normal KPA,...] [--coal NAME] [--json]`:
+// the FT-4 shear test (scenario/shear_cell.hpp) on each coal of a case. Writes DIR/shear_test.json
+// (the results), DIR/points.csv (every pre-shear and failure point), DIR/series_<coal>.csv (the
+// stresses through the whole test) and DIR/figures/yield_locus_<coal>.png (the locus with both
+// Mohr circles); --json prints the JSON on stdout as well.
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "core/constants.hpp"
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/config/load.hpp"
+#include "io/csv.hpp"
+#include "scenario/shear_cell.hpp"
+
+namespace fs = std::filesystem;
+
+namespace silodem::app {
+namespace {
+
+std::vector<double> kpa_list(const std::string& text, const char* option) {
+  std::vector<double> v;
+  std::size_t a = 0;
+  while (a <= text.size()) {
+    std::size_t b = text.find(',', a);
+    if (b == std::string::npos) b = text.size();
+    const std::string cell = text.substr(a, b - a);
+    std::size_t used = 0;
+    double x = 0;
+    try {
+      x = std::stod(cell, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != cell.size() || cell.empty() || !(x > 0) || !std::isfinite(x))
+      throw InputError(
+          {}, option,
+          fmt::format("'{}' is not a positive number of kPa (give e.g. 7,6,5,4,3)", cell));
+    v.push_back(x * 1e3);
+    a = b + 1;
+  }
+  return v;
+}
+
+std::string safe_name(const std::string& s) {
+  std::string o;
+  for (char ch : s) o += (std::isalnum(static_cast<unsigned char>(ch)) || ch == '-') ? ch : '_';
+  return o;
+}
+
+nlohmann::json finite_or_null(double x) {
+  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+}
+
+nlohmann::json result_json(const ShearTestResult& r, const CoalProperties& coal,
+                           const ShearTestSpec& spec, double wall_time) {
+  nlohmann::json locus = nlohmann::json::array();
+  for (const auto& p : r.points) locus.push_back({p.sigma / 1e3, p.tau / 1e3});
+  nlohmann::json pre = nlohmann::json::array();
+  for (const auto& p : r.points) pre.push_back({p.preshear.sigma / 1e3, p.preshear.tau / 1e3});
+  const YieldLocus& y = r.locus;
+  return {
+      {"coal", r.coal},
+      {"cohesion_kpa", y.cohesion / 1e3},
+      {"friction_angle_deg", y.friction_angle / units::deg},
+      {"unconfined_yield_kpa", y.unconfined_yield / 1e3},
+      {"major_consolidation_kpa", y.major_consolidation / 1e3},
+      {"ffc", finite_or_null(y.flow_function)},
+      {"bulk_density_kg_m3", r.bulk_density},
+      {"solid_fraction", r.solid_fraction},
+      {"yield_locus", locus},
+      {"preshear_kpa", {r.preshear.sigma / 1e3, r.preshear.tau / 1e3}},
+      {"preshear_points", pre},
+      {"preshear_steady", r.preshear_steady},
+      {"fit_rms_residual_kpa", y.rms_residual / 1e3},
+      {"consolidation_circle_tangent", y.consolidation_tangent},
+      {"mohr_unconfined_kpa", {y.unconfined.centre / 1e3, y.unconfined.radius / 1e3}},
+      {"mohr_consolidation_kpa", {y.consolidation.centre / 1e3, y.consolidation.radius / 1e3}},
+      {"measured",
+       {{"cohesion_kpa", coal.cohesion / 1e3},
+        {"friction_angle_deg", coal.friction_angle / units::deg},
+        {"bulk_density_kg_m3", coal.bulk_density}}},
+      {"cell",
+       {{"particles", r.particles},
+        {"glued", r.glued},
+        {"width_mm", r.width * 1e3},
+        {"sheared_height_mm", r.sheared_height * 1e3},
+        {"mean_cg_diameter_mm", r.mean_diameter * 1e3},
+        {"shear_velocity_m_s", r.shear_velocity},
+        {"inertial_number", spec.inertial_number},
+        {"time_step_s", r.dt},
+        {"steps", r.steps},
+        {"wall_time_s", wall_time}}},
+      {"warnings", r.warnings},
+  };
+}
+
+void write_points(const fs::path& file, const std::vector<ShearTestResult>& results) {
+  CsvWriter w(file.string(), {"coal", "kind", "point", "sigma_target_kpa", "sigma_kpa", "tau_kpa",
+                              "strain_at_peak", "steady"});
+  for (const auto& r : results)
+    for (std::size_t k = 0; k < r.points.size(); ++k) {
+      const ShearPoint& p = r.points[k];
+      const std::string i = std::to_string(k + 1);
+      w.row(std::vector<std::string>{
+          r.coal, "preshear", i, fmt::format("{:.17g}", r.preshear.sigma / 1e3),
+          fmt::format("{:.17g}", p.preshear.sigma / 1e3),
+          fmt::format("{:.17g}", p.preshear.tau / 1e3), "", p.preshear_steady ? "1" : "0"});
+      w.row(std::vector<std::string>{
+          r.coal, "failure", i, fmt::format("{:.17g}", p.sigma_target / 1e3),
+          fmt::format("{:.17g}", p.sigma / 1e3), fmt::format("{:.17g}", p.tau / 1e3),
+          fmt::format("{:.17g}", p.strain_at_peak), ""});
+    }
+  w.finish();
+}
+
+void write_series(const fs::path& file, const ShearTestResult& r) {
+  CsvWriter w(file.string(),
+              {"time_s", "phase", "point", "strain", "sigma_kpa", "tau_kpa", "height_mm"});
+  for (const auto& s : r.series)
+    w.row(std::vector<std::string>{
+        fmt::format("{:.17g}", s.time), s.phase, std::to_string(s.point),
+        fmt::format("{:.17g}", s.strain), fmt::format("{:.17g}", s.sigma / 1e3),
+        fmt::format("{:.17g}", s.tau / 1e3), fmt::format("{:.17g}", s.height * 1e3)});
+  w.finish();
+}
+
+}  // namespace
+
+int shear_test_command(const ShearTestOptions& o) {
+  ShearTestSpec spec;
+  spec.preshear = o.preshear_kpa * 1e3;
+  if (!(spec.preshear > 0) || !std::isfinite(spec.preshear))
+    throw InputError({}, "--preshear", fmt::format("{:g} kPa: must be positive", o.preshear_kpa));
+  if (!o.normals.empty()) spec.normals = kpa_list(o.normals, "--normal");
+  if (o.preshear_kpa != 9.0 && o.normals.empty()) {
+    // The standard test's ratios: 7/9 .. 3/9 of the pre-shear stress.
+    spec.normals.clear();
+    for (double f : {7.0, 6.0, 5.0, 4.0, 3.0}) spec.normals.push_back(spec.preshear * f / 9.0);
+  }
+  spec.threads = o.threads;
+  spec.seed = o.seed;
+  spec.width = o.width;
+  spec.height = o.height;
+  spec.inertial_number = o.inertial_number;
+  spec.preshear_strain = o.preshear_strain;
+  spec.represhear_strain = o.represhear_strain;
+  spec.failure_strain = o.failure_strain;
+
+  check_shear_spec(spec);
+  const Case c = config::load_case_file(o.case_path, o.overrides);
+  ContactModel model;
+  const CaseReport report = derive_case(c, &model);
+  std::vector<int> coals;
+  for (std::size_t k = 0; k < c.coals.size(); ++k)
+    if (o.coal.empty() || c.coals[k].name == o.coal) coals.push_back(int(k));
+  if (coals.empty()) {
+    std::string names;
+    for (const auto& cp : c.coals) names += (names.empty() ? "" : ", ") + cp.name;
+    throw InputError({}, "--coal",
+                     fmt::format("'{}' is not a coal of the case ({})", o.coal, names));
+  }
+  const fs::path out(o.out_dir);
+  if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
+    throw InputError({}, "--out", fmt::format("'{}' exists and is not empty", o.out_dir));
+  fs::create_directories(out / "figures");
+
+  std::vector<ShearTestResult> results;
+  nlohmann::json all = nlohmann::json::array();
+  for (int ci : coals) {
+    const auto t0 = std::chrono::steady_clock::now();
+    results.push_back(run_shear_test(c, report, model, ci, spec, [&](const std::string& m) {
+      if (!o.json) fmt::print(stderr, "{}\n", m);
+    }));
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    all.push_back(result_json(results.back(), c.coals[std::size_t(ci)], spec, wall));
+    write_series(out / fmt::format("series_{}.csv", safe_name(results.back().coal)),
+                 results.back());
+  }
+  write_points(out / "points.csv", results);
+  const nlohmann::json doc = {{"case", c.path},
+                              {"k", c.cg.k},
+                              {"preshear_kpa", spec.preshear / 1e3},
+                              {"normal_kpa",
+                               [&] {
+                                 std::vector<double> v;
+                                 for (double s : spec.normals) v.push_back(s / 1e3);
+                                 return v;
+                               }()},
+                              {"coals", all}};
+  const std::string text = doc.dump(2) + "\n";
+  write_atomically((out / "shear_test.json").string(), {text}, false);
+  std::vector<std::string> tool_args = {out.string()};
+  if (o.json) tool_args.insert(tool_args.begin(), "--quiet");  // stdout is the JSON's
+  const int rc = run_tool("silodem_shear.py", tool_args, /*quiet_if_unavailable=*/true);
+  if (o.json) {
+    fmt::print("{}", text);
+  } else {
+    for (const auto& r : all)
+      fmt::print(
+          "{}: C = {:.3f} kPa (measured {:.3f}), phi = {:.1f} deg (measured {:.1f}), f_c = "
+          "{:.3f} kPa, sigma_1 = {:.3f} kPa, ffc = {}, bulk density {:.0f} kg/m3 "
+          "(measured {:.0f})\n",
+          r["coal"].get<std::string>(), r["cohesion_kpa"].get<double>(),
+          r["measured"]["cohesion_kpa"].get<double>(), r["friction_angle_deg"].get<double>(),
+          r["measured"]["friction_angle_deg"].get<double>(),
+          r["unconfined_yield_kpa"].get<double>(), r["major_consolidation_kpa"].get<double>(),
+          r["ffc"].is_null() ? std::string("inf (no cohesion)")
+                             : fmt::format("{:.2f}", r["ffc"].get<double>()),
+          r["bulk_density_kg_m3"].get<double>(), r["measured"]["bulk_density_kg_m3"].get<double>());
+    fmt::print("wrote {}\n", (out / "shear_test.json").string());
+  }
+  return rc;
+}
+
+}  // namespace silodem::app

@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: MIT
+#include "scenario/shear_cell.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "core/constants.hpp"
+#include "core/error.hpp"
+#include "core/random.hpp"
+#include "engine/plate.hpp"
+#include "engine/walls/plane.hpp"
+#include "scenario/size_distribution.hpp"
+
+namespace silodem {
+namespace {
+
+// Volume of the part of a sphere (centre z0, radius r) between the planes z = a and z = b.
+double sphere_slab(double z0, double r, double a, double b) {
+  auto below = [&](double u) {  // cap below the plane z = u
+    const double h = std::clamp(u - (z0 - r), 0.0, 2.0 * r);
+    return kPi * h * h * (3.0 * r - h) / 3.0;
+  };
+  return below(b) - below(a);
+}
+
+class Cell {
+ public:
+  Cell(std::unique_ptr<Simulation> sim, double area, double d_mean)
+      : sim_(std::move(sim)), area_(area), d_(d_mean) {
+    floor_ = std::make_unique<Plate>(*sim_, 0);
+    lid_ = std::make_unique<Plate>(*sim_, 1);
+    floor_->add_to(*sim_);
+    lid_->add_to(*sim_);
+  }
+  Simulation& sim() { return *sim_; }
+  Plate& lid() { return *lid_; }
+  Plate& floor() { return *floor_; }
+  double lid_z() const { return dynamic_cast<const PlaneWall&>(sim_->wall(1)).point().z; }
+  // Steps n times; returns the mean normal and shear stress on the lid over them.
+  StressPoint run(long n) {
+    double s = 0, t = 0;
+    for (long k = 0; k < n; ++k) {
+      sim_->step();
+      const Vec3 f = lid_->force(*sim_);
+      s += -dot(f, lid_->normal()) / area_;
+      t += -f.x / area_;  // the lid moves along +x: the sample holds it back
+    }
+    return {s / double(n), t / double(n)};
+  }
+  double area() const { return area_; }
+  double d() const { return d_; }
+
+ private:
+  std::unique_ptr<Simulation> sim_;
+  std::unique_ptr<Plate> floor_, lid_;
+  double area_, d_;
+};
+
+}  // namespace
+
+void check_shear_spec(const ShearTestSpec& spec) {
+  if (spec.normals.size() < 2)
+    throw InputError({}, "--normal", "needs at least two normal stresses for a yield locus");
+  for (double s : spec.normals)
+    if (!(s > 0 && s < spec.preshear))
+      throw InputError({}, "--normal",
+                       fmt::format("{:g} kPa: each normal stress must lie in (0, {:g}) kPa, below "
+                                   "the pre-shear stress",
+                                   s / 1e3, spec.preshear / 1e3));
+}
+
+ShearTestResult run_shear_test(const Case& c, const CaseReport& report, const ContactModel& model,
+                               int coal, const ShearTestSpec& spec, const ShearProgress& progress) {
+  check_shear_spec(spec);
+  const CoalProperties& coal_p = c.coals[std::size_t(coal)];
+  const CoalReport& cr = report.coals[std::size_t(coal)];
+  ShearTestResult res;
+  res.coal = coal_p.name;
+
+  // Sizes: the coal's CG distribution; its number mean sets the cell.
+  Random rng(spec.seed * 0x9e3779b97f4a7c15ULL + std::uint64_t(coal) + 1);
+  const SizeSampler sizes(coal_p, c.cg);
+  double d_mean = 0;
+  {
+    Random probe(spec.seed);
+    for (int k = 0; k < 4000; ++k) d_mean += sizes.sample(probe) / 4000.0;
+  }
+  const double d_max = sizes.max_diameter(), d_min = sizes.min_diameter();
+  res.mean_diameter = d_mean;
+
+  SimulationSettings s = settings_of(c, report, d_min, spec.threads);
+  s.gravity = {};
+  s.max_speed = 0.0;
+  const double cut = d_max * (1.0 + model.max_reach_over_d()) + s.skin;
+  double L = spec.width * d_mean;
+  if (L < 2.05 * cut) {
+    res.warnings.push_back(fmt::format(
+        "the cell is {:.4g} m wide, not {:g} mean diameters: the periodic box must be at least "
+        "twice the neighbour cut-off",
+        2.05 * cut, spec.width));
+    L = 2.05 * cut;
+  }
+  s.periodic.set(0, 0.0, L);
+  s.periodic.set(1, 0.0, L);
+  res.width = L;
+  res.dt = s.dt;
+
+  // The loose sample: a jittered lattice with the solid volume of the sample at a solid fraction
+  // of 0.6 between the plates (the sheared height plus the two glued layers).
+  const double h_total = (spec.height + 2.0) * d_mean;
+  const double solid = 0.6 * L * L * h_total;
+  const int nxy = std::max(1, int(std::floor(L / (1.05 * d_max))));
+  const double sxy = L / nxy, sz = 1.05 * d_max;
+  const double jitter = 0.45 * (std::min(sxy, sz) - d_max);
+  auto sim = std::make_unique<Simulation>(model, s);
+  sim->add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{0, 0, 1}));
+  auto& p = sim->particles();
+  double placed = 0, z_top = 0;
+  for (int layer = 0; placed < solid; ++layer) {
+    const double z = 0.5 * d_max + jitter + layer * sz;
+    for (int iy = 0; iy < nxy && placed < solid; ++iy)
+      for (int ix = 0; ix < nxy && placed < solid; ++ix) {
+        const double di = sizes.sample(rng);
+        const Vec3 x{(ix + 0.5) * sxy + rng.uniform(-jitter, jitter),
+                     (iy + 0.5) * sxy + rng.uniform(-jitter, jitter),
+                     z + rng.uniform(-jitter, jitter)};
+        p.add(s.periodic.wrap(x), {}, {}, 0.5 * di, sphere_mass(di, coal_p.true_density), coal);
+        placed += kPi / 6.0 * di * di * di;
+        z_top = std::max(z_top, z + 0.5 * d_max + jitter);
+      }
+  }
+  sim->add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, z_top + 0.01 * d_max}, Vec3{0, 0, -1}));
+  res.particles = int(p.size());
+  Cell cell(std::move(sim), L * L, d_mean);
+  Simulation& S = cell.sim();
+
+  // The servo's gain: stable when gain x (c + k dt) < 1 over the lid's contacts (plate.hpp). A
+  // contact of a CG particle on a wall has k = m (pi / t_col)^2 and at most the critical damping
+  // 2 sqrt(m k); the lid (or its glued layer) touches about one particle per d^2 of its area.
+  const double m_cg = cr.cg_mass, t_w = cr.wall_collision_time;
+  const double k_w = m_cg * kPi * kPi / (t_w * t_w), c_w = 2.0 * std::sqrt(m_cg * k_w);
+  const double contacts = (L / d_mean) * (L / d_mean);
+  const double gain = 0.5 / (contacts * (c_w + k_w * s.dt));
+  const double sigma_min = *std::min_element(spec.normals.begin(), spec.normals.end());
+  auto servo = [&](double sigma, double vx, double v_cap) {
+    cell.lid().set_control({{vx, 0, 0}, true, sigma, cell.area(), gain, v_cap});
+  };
+  const double t_col = report.collision_time_min;
+  const long chunk = std::max(100L, long(20.0 * t_col / s.dt));
+  auto log = [&](const std::string& m) {
+    if (progress) progress(fmt::format("{}: {}", coal_p.name, m));
+  };
+  auto record = [&](const std::string& phase, int point, double strain, const StressPoint& st) {
+    res.series.push_back({phase, point, S.time(), strain, st.sigma, st.tau, cell.lid_z()});
+  };
+
+  // Hold `sigma` without shearing until the mean load over three chunks in a row is within 2% of
+  // it (at most 5000 t_col). The sample still creeps then, slowly; the shear that follows sets
+  // its state.
+  auto hold = [&](const std::string& phase, int point, double sigma) {
+    servo(sigma, 0.0, 0.0);
+    int good = 0;
+    const double t0 = S.time();
+    while (good < 3 && S.time() - t0 < 5000 * t_col) {
+      const StressPoint st = cell.run(chunk);
+      record(phase, point, 0.0, st);
+      good = std::abs(st.sigma / sigma - 1.0) < 0.02 ? good + 1 : 0;
+    }
+    if (good < 3)
+      res.warnings.push_back(
+          fmt::format("{} at {:g} kPa: the load did not settle within 5000 "
+                      "collision times",
+                      phase, sigma / 1e3));
+  };
+
+  // 1. Press the loose sample to the pre-shear stress: the lid comes down at a set speed until
+  // it carries half the load, then the servo takes over.
+  const double v_press = std::min(0.1, 0.05 * h_total / (200 * t_col));
+  cell.lid().set_control({{0, 0, -v_press}});
+  log(fmt::format("{} particles in a {:.1f} mm cell; pressing to {:g} kPa", res.particles, L * 1e3,
+                  spec.preshear / 1e3));
+  for (;;) {
+    const StressPoint st = cell.run(chunk);
+    record("compress", 0, 0.0, st);
+    if (st.sigma > spec.preshear / 2) break;
+    if (cell.lid_z() < 0.5 * h_total)
+      throw SimulationError(
+          "shear cell: the lid came down to half the sample height without "
+          "meeting the pre-shear load");
+  }
+  hold("consolidate", 0, spec.preshear);
+
+  // 2. Rough plates of the coal itself.
+  {
+    std::vector<std::size_t> bottom, top;
+    const double zl = cell.lid_z();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (S.particles().x[i].z < d_mean) bottom.push_back(i);
+      if (S.particles().x[i].z > zl - d_mean) top.push_back(i);
+    }
+    cell.floor().glue(S, bottom);
+    cell.lid().glue(S, top);
+    res.glued = int(bottom.size() + top.size());
+  }
+  const double h_shear = cell.lid_z() - 2.0 * d_mean;
+  res.sheared_height = h_shear;
+  const double v_shear =
+      spec.inertial_number * h_shear * std::sqrt(sigma_min / coal_p.true_density) / d_mean;
+  res.shear_velocity = v_shear;
+  const long per_row =
+      std::max(1L, long(std::llround(spec.sample_strain * h_shear / v_shear / s.dt)));
+  const double v_cap = 0.5 * v_shear;  // the lid's normal speed, at most half the shear speed
+
+  // Shears at `sigma` by `strain`; returns the rows.
+  auto shear = [&](const std::string& phase, int point, double sigma, double strain) {
+    servo(sigma, v_shear, v_cap);
+    const double x0 = cell.lid().displacement().x;
+    std::vector<StressPoint> rows;
+    std::vector<double> strains;
+    while (cell.lid().displacement().x - x0 < strain * h_shear) {
+      const StressPoint st = cell.run(per_row);
+      const double g = (cell.lid().displacement().x - x0) / h_shear;
+      record(phase, point, g, st);
+      rows.push_back(st);
+      strains.push_back(g);
+    }
+    log(fmt::format("{} {} at {:g} kPa: strain {:.2f} done, t = {:.3f} s, {} steps", phase, point,
+                    sigma / 1e3, strain, S.time(), S.step_count()));
+    return std::make_pair(rows, strains);
+  };
+  // The end of a pre-shear: the mean of its last third; steady if the last sixth and the one
+  // before agree within 5%.
+  auto preshear_end = [](const std::vector<StressPoint>& rows, bool& steady) {
+    const std::size_t n = rows.size(), a = n - n / 3, b = n - n / 6;
+    auto mean = [&](std::size_t i0, std::size_t i1) {
+      StressPoint m;
+      for (std::size_t i = i0; i < i1; ++i) m.sigma += rows[i].sigma, m.tau += rows[i].tau;
+      const double k = double(std::max<std::size_t>(1, i1 - i0));
+      return StressPoint{m.sigma / k, m.tau / k};
+    };
+    const StressPoint last = mean(b, n), before = mean(n - 2 * (n - b), b);
+    steady = std::abs(last.tau - before.tau) < 0.05 * std::abs(last.tau);
+    return mean(a, n);
+  };
+
+  // 3. The first pre-shear, then the bulk density between the glued layers.
+  auto [rows0, g0] = shear("preshear", 0, spec.preshear, spec.preshear_strain);
+  bool steady0 = false;
+  const StressPoint pre0 = preshear_end(rows0, steady0);
+  res.preshear_steady = steady0;
+  {
+    const double a = d_mean, b = cell.lid_z() - d_mean;
+    double v = 0;
+    const auto& q = S.particles();
+    for (std::size_t i = 0; i < q.size(); ++i) v += sphere_slab(q.x[i].z, q.radius[i], a, b);
+    res.solid_fraction = v / (L * L * (b - a));
+    res.bulk_density = res.solid_fraction * coal_p.true_density;
+  }
+  StressPoint pre_sum = pre0;
+  int n_pre = 1;
+
+  // 4. For each lower stress: pre-shear again, stop, hold the lower stress, shear to failure.
+  for (std::size_t k = 0; k < spec.normals.size(); ++k) {
+    const int point = int(k) + 1;
+    const double sigma = spec.normals[k];
+    auto [rows, gs] = shear("preshear", point, spec.preshear, spec.represhear_strain);
+    ShearPoint sp;
+    sp.sigma_target = sigma;
+    sp.preshear = preshear_end(rows, sp.preshear_steady);
+    pre_sum.sigma += sp.preshear.sigma, pre_sum.tau += sp.preshear.tau, ++n_pre;
+    hold("relax", point, sigma);
+    auto [fr, fg] = shear("shear", point, sigma, spec.failure_strain);
+    // The peak of the three-row moving mean (1.5% strain at the default rows).
+    double best = -1e300;
+    for (std::size_t i = 0; i < fr.size(); ++i) {
+      const std::size_t i0 = i > 0 ? i - 1 : 0, i1 = std::min(fr.size() - 1, i + 1);
+      double t = 0, sg = 0;
+      for (std::size_t j = i0; j <= i1; ++j) t += fr[j].tau, sg += fr[j].sigma;
+      t /= double(i1 - i0 + 1), sg /= double(i1 - i0 + 1);
+      if (t > best) best = t, sp.tau = t, sp.sigma = sg, sp.strain_at_peak = fg[i];
+    }
+    if (sp.strain_at_peak > 0.95 * spec.failure_strain)
+      res.warnings.push_back(
+          fmt::format("shear at {:g} kPa: no peak before the end of the shear "
+                      "(strain {:g}); its largest shear stress is used",
+                      sigma / 1e3, spec.failure_strain));
+    res.points.push_back(sp);
+  }
+  res.preshear = {pre_sum.sigma / n_pre, pre_sum.tau / n_pre};
+  std::vector<StressPoint> failure;
+  for (const auto& sp : res.points) failure.push_back({sp.sigma, sp.tau});
+  res.locus = fit_yield_locus(failure, res.preshear);
+  res.steps = S.step_count();
+  return res;
+}
+
+}  // namespace silodem

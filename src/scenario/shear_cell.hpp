@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// A virtual shear cell: the FT-4 shear test (ASTM D7891) applied to one coal of a case, with the
+// case's contact model, coarse graining and laws unchanged, so that its yield locus is a property
+// of the DEM material.
+//
+// The cell is periodic in x and y, at least `width` mean CG diameters across, between a floor and
+// a lid (planes). The coal is put in loose on a lattice and pressed by the lid to the pre-shear
+// stress (servo, plate.hpp). Then the particles whose centres lie within one mean diameter of the
+// floor or of the lid are glued to them: rough plates of the coal itself. The lid shears the
+// sample along x at a constant speed (set by an inertial number, GDR MiDi 2004: quasi-static
+// below about 1e-3) while the servo holds the normal stress. The procedure is the standard one:
+// pre-shear to steady state at the pre-shear stress; then for each lower normal stress, pre-shear
+// again, stop, lower the normal stress, and shear to failure, recording the peak shear stress.
+// Gravity is off in the cell: the plates set the stress (at 3 kPa the weight of an 8-diameter
+// k = 3 sample would add about 1 kPa from top to bottom).
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "scenario/setup.hpp"
+#include "scenario/yield_locus.hpp"
+
+namespace silodem {
+
+struct ShearTestSpec {
+  double preshear = 9e3;                                 // Pa
+  std::vector<double> normals{7e3, 6e3, 5e3, 4e3, 3e3};  // Pa, each below the pre-shear
+  double width = 10.0;                                   // cell side, mean CG diameters
+  double height = 8.0;             // sheared sample between the glued layers, mean CG diameters
+  double inertial_number = 2e-3;   // of the shear at the lowest normal stress
+  double preshear_strain = 0.5;    // the first pre-shear (shear displacement / sheared height)
+  double represhear_strain = 0.2;  // each later pre-shear
+  double failure_strain = 0.25;    // each shear to failure
+  double sample_strain = 0.005;    // strain per row of the series
+  std::uint64_t seed = 1;
+  int threads = 0;
+};
+
+struct ShearSample {
+  std::string phase;                // compress, consolidate, preshear, relax, shear
+  int point = 0;                    // 0: the first pre-shear; i: the i-th normal stress
+  double time = 0.0, strain = 0.0;  // s; shear strain of this phase
+  double sigma = 0.0, tau = 0.0;    // Pa, means over the row
+  double height = 0.0;              // m, floor to lid
+};
+
+struct ShearPoint {
+  double sigma_target = 0.0;      // Pa
+  double sigma = 0.0, tau = 0.0;  // Pa, at the peak of the shear to failure
+  double strain_at_peak = 0.0;
+  StressPoint preshear;  // the pre-shear just before
+  bool preshear_steady = false;
+};
+
+struct ShearTestResult {
+  std::string coal;
+  int particles = 0, glued = 0;
+  double width = 0.0, sheared_height = 0.0;         // m
+  double mean_diameter = 0.0;                       // m, CG, by number
+  double shear_velocity = 0.0, dt = 0.0;            // m/s, s
+  double bulk_density = 0.0, solid_fraction = 0.0;  // between the glued layers, after pre-shear
+  StressPoint preshear;                             // mean over all pre-shears (the end of each)
+  bool preshear_steady = false;  // the first pre-shear reached a steady shear stress
+  std::vector<ShearPoint> points;
+  YieldLocus locus;
+  std::vector<ShearSample> series;
+  long steps = 0;
+  std::vector<std::string> warnings;
+};
+
+using ShearProgress = std::function<void(const std::string&)>;
+
+// Throws InputError for a spec the test cannot run: fewer than two normal stresses, or one not
+// in (0, pre-shear).
+void check_shear_spec(const ShearTestSpec& spec);
+
+// Runs the test on coal `coal` of the case (report and model from derive_case); checks the spec
+// first.
+ShearTestResult run_shear_test(const Case& c, const CaseReport& report, const ContactModel& model,
+                               int coal, const ShearTestSpec& spec, const ShearProgress& progress);
+
+}  // namespace silodem

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// The yield locus of a shear test and its Mohr circles (Schulze, Powders and Bulk Solids, 2nd ed.
+// 2021, 3.1-3.3; ASTM D7891 for the FT-4's procedure): the linear fit tau = C + sigma tan(phi)
+// through the failure points, the unconfined yield strength f_c (the Mohr circle through the
+// origin tangent to the locus), the major consolidation stress sigma_1 (the circle through the
+// pre-shear point tangent to the locus) and the flow function ffc = sigma_1 / f_c.
+#pragma once
+#include <vector>
+
+namespace silodem {
+
+struct StressPoint {
+  double sigma = 0.0, tau = 0.0;  // Pa
+};
+
+struct MohrCircle {
+  double centre = 0.0, radius = 0.0;  // Pa
+};
+
+struct YieldLocus {
+  double cohesion = 0.0;          // C, Pa (the intercept; may come out negative)
+  double friction_angle = 0.0;    // phi, rad (from the slope)
+  double rms_residual = 0.0;      // Pa, of the fit
+  MohrCircle unconfined;          // through the origin, tangent: f_c = 2 radius
+  MohrCircle consolidation;       // through the pre-shear point, tangent: sigma_1 = centre + radius
+  double unconfined_yield = 0.0;  // f_c, Pa (0 when C <= 0)
+  double major_consolidation = 0.0;   // sigma_1, Pa
+  double flow_function = 0.0;         // ffc = sigma_1 / f_c (infinity when f_c = 0)
+  bool consolidation_tangent = true;  // false: the pre-shear point lies above the locus, so no
+                                      // circle through it is tangent; then sigma_1 is the larger
+                                      // principal stress of the pre-shear point's own circle
+                                      // centred on the sigma axis with tau_pre as its radius
+};
+
+// Least squares over at least two points with distinct sigma (throws std::invalid_argument).
+YieldLocus fit_yield_locus(const std::vector<StressPoint>& failure, const StressPoint& preshear);
+
+}  // namespace silodem
