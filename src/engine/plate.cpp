@@ -65,8 +65,13 @@ void Plate::advance(Simulation& sim) {
   Vec3 v = control_.velocity;
   if (control_.servo) {
     const double target = control_.stress * control_.area;
-    double vn = control_.gain * (target - load(sim));  // along the normal: into the particles
-    if (control_.max_speed > 0) vn = std::clamp(vn, -control_.max_speed, control_.max_speed);
+    const double e = target - load(sim);
+    const double ti = control_.integral_time;
+    // along the normal: into the particles
+    double vn = control_.gain * (e + (ti > 0 ? (integral_ + e * sim.dt()) / ti : 0.0));
+    const bool capped = control_.max_speed > 0 && std::abs(vn) > control_.max_speed;
+    if (capped) vn = std::clamp(vn, -control_.max_speed, control_.max_speed);
+    if (ti > 0 && !capped) integral_ += e * sim.dt();
     v = v - normal_ * dot(v, normal_) + normal_ * vn;
   }
   velocity_ = v;

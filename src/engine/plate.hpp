@@ -13,9 +13,9 @@
 // advance() is called at the beginning of every step (a Phase::StepBegin hook, add_to()). It
 // reads the force of the last force pass, sets the velocity, moves the wall by v dt and gives the
 // glued particles v, which the integrator then applies to them: wall and particles stay
-// together. The servo law is proportional: the normal speed is gain x (target load - load),
-// capped at max_speed (the servo walls of LIGGGHTS and Thornton's strain-controlled cells work
-// this way). It is stable when gain x (c + k dt) < 1, where k and c are the summed stiffness and
+// together. The servo law is proportional-integral: the normal speed is
+// gain x (e + (1 / integral_time) x integral of e dt), e = target load - load, capped at
+// max_speed (the integral stops growing while the cap holds, so it does not wind up). It is stable when gain x (c + k dt) < 1, where k and c are the summed stiffness and
 // damping coefficient of the plate's contacts: the dashpots answer the plate's own speed at once.
 #pragma once
 #include <cstdint>
@@ -34,6 +34,9 @@ struct PlateControl {
   double area = 0.0;       // m^2, the area the stress acts on
   double gain = 0.0;       // m/s per N of load error
   double max_speed = 0.0;  // m/s, the servo's largest normal speed (0: no cap)
+  // s: the integral action's time (0: proportional only). The proportional servo holds a sample
+  // that creeps or dilates at speed v off its target by v / gain; the integral takes that up.
+  double integral_time = 0.0;
 };
 
 class Plate {
@@ -70,6 +73,7 @@ class Plate {
   PlateControl control_;
   Vec3 velocity_, displacement_;
   Vec3 moved_since_build_;
+  double integral_ = 0.0;  // N s, of the load error
   long builds_seen_ = -1;
 };
 

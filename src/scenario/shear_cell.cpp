@@ -145,10 +145,12 @@ ShearTestResult run_shear_test(const Case& c, const CaseReport& report, const Co
   const double contacts = (L / d_mean) * (L / d_mean);
   const double gain = 0.5 / (contacts * (c_w + k_w * s.dt));
   const double sigma_min = *std::min_element(spec.normals.begin(), spec.normals.end());
-  auto servo = [&](double sigma, double vx, double v_cap) {
-    cell.lid().set_control({{vx, 0, 0}, true, sigma, cell.area(), gain, v_cap});
-  };
   const double t_col = report.collision_time_min;
+  // The integral time: with the bulk's stiffness, about (L / d)^2 k / (H / d), the proportional
+  // loop's time is about 10 t_col; 50 t_col damps the integral's loop (damping ratio about 1).
+  auto servo = [&](double sigma, double vx, double v_cap) {
+    cell.lid().set_control({{vx, 0, 0}, true, sigma, cell.area(), gain, v_cap, 50.0 * t_col});
+  };
   const long chunk = std::max(100L, long(20.0 * t_col / s.dt));
   auto log = [&](const std::string& m) {
     if (progress) progress(fmt::format("{}: {}", coal_p.name, m));

@@ -3,9 +3,10 @@
 // 2.4 mm). Such an assembly has no cohesion and a small but nonzero macroscopic friction, from
 // geometry alone: tan(phi) = 0.10 in quasi-static steady shear (Peyneau & Roux, Phys. Rev. E 78,
 // 011307, 2008). The test checks the steady pre-shear ratio tau / sigma against that within 0.05
-// (the shear at an inertial number of 5e-3 adds a little, and a cell of about 300 spheres
-// scatters: seeds 1-3 of this cell gave 0.124 to 0.145), the locus's intercept against zero within
-// 10% of the pre-shear stress, and that the servo held the pre-shear stress within 5%.
+// (a cell of about 300 spheres scatters: seeds 1-3 of this cell gave 0.110 to 0.143, mean 0.128;
+// the rate adds a little, the mean was 0.15 at an inertial number of 5e-3), the locus's intercept
+// against zero within 10% of the pre-shear stress, and that the servo held the pre-shear stress
+// within 5%.
 #include <gtest/gtest.h>
 
 #include "io/config/load.hpp"
@@ -24,7 +25,7 @@ TEST(ShearCell, FrictionlessSpheresHaveThePeyneauRouxFrictionAndNoCohesion) {
   spec.normals = {1.4e3, 0.8e3};
   spec.width = 6;
   spec.height = 6;
-  spec.inertial_number = 5e-3;
+  spec.inertial_number = 1e-3;
   spec.preshear_strain = 0.4;
   spec.represhear_strain = 0.1;
   spec.failure_strain = 0.15;
