@@ -15,8 +15,9 @@
 // glued particles v, which the integrator then applies to them: wall and particles stay
 // together. The servo law is proportional-integral: the normal speed is
 // gain x (e + (1 / integral_time) x integral of e dt), e = target load - load, capped at
-// max_speed (the integral stops growing while the cap holds, so it does not wind up). It is stable when gain x (c + k dt) < 1, where k and c are the summed stiffness and
-// damping coefficient of the plate's contacts: the dashpots answer the plate's own speed at once.
+// max_speed (the integral stops growing while the cap holds, so it does not wind up). It is stable
+// when gain x (c + k dt) < 1, where k and c are the summed stiffness and damping coefficient of the
+// plate's contacts: the dashpots answer the plate's own speed at once.
 #pragma once
 #include <cstdint>
 #include <vector>

@@ -226,5 +226,35 @@ TEST(Plate, ServoHoldsTheNormalStressAndTheColumnIsInEquilibrium) {
   EXPECT_NEAR(lid.displacement().z, -1e-4 - 1.2e-6, 0.02e-6);
 }
 
+// A sphere glued to a floor that sinks at v0 (a sample creeping at a steady speed) under a servo
+// lid. The lid must follow at v0; a proportional servo does so only with the load off its target
+// by v0 / gain (v = gain e, and the dashpot sees no relative speed then), the integral action
+// takes that offset up.
+double creeping_load(double integral_time, double* target_out) {
+  SimulationSettings s = quiet(1e-6);
+  Simulation sim(test::model_of(frictional()), s);
+  sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 0}, Vec3{0, 0, 1}));
+  sim.add_wall(std::make_unique<PlaneWall>(Vec3{0, 0, 2.001e-3}, Vec3{0, 0, -1}));
+  sim.particles().add({0, 0, 1e-3}, {}, {}, 1e-3, 1e-5, 0);
+  Plate floor(sim, 0, {0});
+  floor.set_control({{0, 0, -1e-3}});
+  floor.add_to(sim);
+  Plate lid(sim, 1);
+  const double target = 0.01, gain = 1.0;  // gain (c + k dt) = 1 x (0.14 + 0.01) < 1
+  lid.set_control({{}, true, target, 1.0, gain, 0.0, integral_time});
+  lid.add_to(sim);
+  sim.run_steps(50000);
+  *target_out = target;
+  return lid.load(sim);
+}
+
+TEST(Plate, IntegralActionTakesUpTheOffsetOfACreepingSample) {
+  double target = 0;
+  const double p_only = creeping_load(0.0, &target);
+  EXPECT_NEAR(p_only, target - 1e-3 / 1.0, 0.01 * target);  // v0 / gain = 1e-3 N
+  const double pi = creeping_load(1e-3, &target);
+  EXPECT_NEAR(pi, target, 0.005 * target);
+}
+
 }  // namespace
 }  // namespace silodem
