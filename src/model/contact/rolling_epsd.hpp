@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "core/inline.hpp"
 #include "model/contact/contact_history.hpp"
@@ -51,7 +52,12 @@ struct RollingEpsd {
       spring *= m > 0.0 ? limit / m : 0.0;
       torque = spring;
     } else {
-      const double c_r = p.damping_fraction * 2.0 * std::sqrt(rolling_inertia(g) * k_r);
+      // Two bodies that cannot rotate (infinite inertia: both glued to a plate) have no rolling
+      // to damp; the product infinity x 0 would be NaN.
+      const double i_r = rolling_inertia(g);
+      const double c_r = i_r < std::numeric_limits<double>::infinity()
+                             ? p.damping_fraction * 2.0 * std::sqrt(i_r * k_r)
+                             : 0.0;
       torque = spring - c_r * w;
     }
     h[0] = spring.x, h[1] = spring.y, h[2] = spring.z;

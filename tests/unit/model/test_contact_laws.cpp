@@ -3,6 +3,8 @@
 // equation; and T-C5, the pull-off work of the cohesion range laws.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <cmath>
 
 #include "../../physics/helpers.hpp"
@@ -240,6 +242,25 @@ TEST(RollingEpsd, LimitTorqueAndOppositeOnPartner) {
   EXPECT_NEAR(norm(Vec3{spring[0], spring[1], spring[2]}), 0.2 * g.r_eff * 1.0, 1e-15);
   EXPECT_LT(t.on_i.y, 0.0);
   EXPECT_NEAR(t.on_j.y, -t.on_i.y, 1e-18);
+}
+
+// Two particles that cannot rotate (inv_inertia 0, infinite inertia: both glued to a shear cell's
+// plate) get a finite torque below the limit: the rolling damping has nothing to damp, where
+// infinity x 0 gave NaN.
+TEST(RollingEpsd, BodiesThatCannotRotateGetAFiniteTorque) {
+  Laws l;
+  l.rolling = "epsd";
+  l.rolling_p = {{"friction", 0.2}};
+  const ContactLaw law = test::law_of(l, false);
+  ContactGeometry g = geometry(1e-4);
+  g.inertia_i = g.inertia_j = std::numeric_limits<double>::infinity();
+  NormalForce fn;
+  fn.total = 1.0;
+  fn.stiffness = 1e4;
+  double spring[3] = {1e-6, 0, 0};  // below the limit 0.2 R_eff 1 N
+  const RollingTorque t = test::kernel<RollingEpsd>(law, g, fn, 0.0, spring, 1e-3);
+  EXPECT_TRUE(std::isfinite(t.on_i.x) && std::isfinite(t.on_i.y) && std::isfinite(t.on_i.z));
+  EXPECT_DOUBLE_EQ(t.on_i.x, 1e-6);  // the spring alone (omega = 0: it does not change)
 }
 
 TEST(SeesCohesion, TensionGivesNoFrictionOrRollingCapacity) {
