@@ -264,10 +264,13 @@ ShearTestResult run_shear_test(const Case& c, const CaseReport& report, const Co
   StressPoint pre_sum = pre0;
   int n_pre = 1;
 
-  // 4. For each lower stress: pre-shear again, stop, hold the lower stress, shear to failure.
+  // 4. For each lower stress: hold the pre-shear stress, pre-shear again, stop, hold the lower
+  // stress, shear to failure.
   for (std::size_t k = 0; k < spec.normals.size(); ++k) {
     const int point = int(k) + 1;
     const double sigma = spec.normals[k];
+    // Back to the pre-shear stress first (the servo's speed is capped while it shears).
+    hold("consolidate", point, spec.preshear);
     auto [rows, gs] = shear("preshear", point, spec.preshear, spec.represhear_strain);
     ShearPoint sp;
     sp.sigma_target = sigma;
