@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Issue 17, must-show 2: the shear cell against what is known of simple spheres. Monodisperse
+# spheres, sliding friction 0.5, no rolling resistance (studies/shear/spheres-mu0.5.toml), the FT-4
+# procedure at 9 kPa pre-shear, sheared at an inertial number of 5e-3 at the lowest stress (quasi-static:
+# mu(I) of Jop et al. 2006 with I0 = 0.28 adds about 0.005 to tau / sigma there):
+#   base   10 d wide, 8 d high, k_n = 3e4 N/m (stiffness number k_n / (sigma d) = 556 at 9 kPa)
+#   box    14 d wide, 11 d high (2.7x the particles)
+#   stiff  k_n = 3e5 N/m (10x)
+#   f1/f2  the constant-force law (cohesion "overlap-only") at F = 0.15 and 0.30 N (Bond number
+#          F / (m g) 54 and 108, as the paper's 54-72 at k = 3; F / d^2 = 4.2 and 8.3 kPa), base cell
+# with SEEDS seeds each (default 3). Then studies/shear/spheres_check.py compares the seeds' means
+# with the tolerances of issue 17 and writes OUT/checks.csv; exit 1 if a check fails.
+# Resumable: a run whose shear_test.json exists is skipped. JOBS runs side by side (environment,
+# default 2), one thread each.
+# Cost: about 3 min of one core per base, f1 or f2 run; box 2.7x, stiff 3.2x; 3 seeds about 70 min.
+# Usage: bash studies/shear/spheres_check.sh OUT [SILODEM] [SEEDS]
+set -euo pipefail
+out=${1:?usage: spheres_check.sh OUT [SILODEM] [SEEDS]}
+here=$(cd "$(dirname "$0")/../.." && pwd)
+silodem=${2:-$here/build/release/silodem}
+seeds=${3:-3}
+jobs_max=${JOBS:-2}
+case_file=$here/studies/shear/spheres-mu0.5.toml
+mkdir -p "$out"
+
+declare -A extra=(
+  [base]=""
+  [box]="--width 14 --height 11"
+  [stiff]="--set contact.particle_particle.normal.stiffness=3e5 --set contact.particle_wall.normal.stiffness=3e5"
+  [f1]="--set contact.particle_particle.cohesion.law=overlap-only --set coal[0].cohesion_force_n=0.15"
+  [f2]="--set contact.particle_particle.cohesion.law=overlap-only --set coal[0].cohesion_force_n=0.30"
+)
+jobs=()
+for s in $(seq 1 "$seeds"); do
+  for name in base f1 f2 box stiff; do jobs+=("$name:$s"); done
+done
+
+run_one() {
+  local name=${1%%:*} seed=${1##*:}
+  local dir=$out/${name}_seed=$seed
+  [ -f "$dir/shear_test.json" ] && return 0
+  rm -rf "$dir"
+  # shellcheck disable=SC2086
+  "$silodem" shear-test "$case_file" --out "$dir" --threads 1 --seed "$seed" --inertial-number 5e-3 ${extra[$name]} \
+    > "$out/${name}_seed=$seed.log" 2>&1 || { echo "failed: $name seed $seed (see $out/${name}_seed=$seed.log)"; return 1; }
+  echo "done: $name seed $seed"
+}
+
+running=0
+for j in "${jobs[@]}"; do
+  run_one "$j" &
+  running=$((running + 1))
+  if [ "$running" -ge "$jobs_max" ]; then wait -n || true; running=$((running - 1)); fi
+done
+wait || true
+exec /usr/bin/python3 "$here/studies/shear/spheres_check.py" "$out"
