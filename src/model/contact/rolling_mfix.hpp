@@ -10,6 +10,8 @@
 // w_eps = 10 T dt / I, the spin one contact's torque would remove in ten steps: identical to MFIX
 // whenever |omega| > w_eps, and a viscous stop below it that stays stable with up to 20 contacts
 // (the summed coefficient stays below 2 I / dt).
+// The torque's size is |k_n delta_n|: a normal law with tension (luding, on its adhesive branch)
+// gives a negative elastic force, which must not turn the torque into a push along the spin.
 #pragma once
 #include <algorithm>
 #include <array>
@@ -27,8 +29,9 @@ struct RollingMfix {
 
   // -magnitude omega / max(|omega|, w_eps), w_eps = 10 magnitude dt / I; below w_eps that is
   // -omega I / (10 dt), which needs neither a square root nor a division (and is 0 at rest).
-  SILODEM_HOT static Vec3 oppose(const Vec3& omega, double magnitude, double inertia,
+  SILODEM_HOT static Vec3 oppose(const Vec3& omega, double signed_magnitude, double inertia,
                                  double inv_inertia, bool regularize, double dt) {
+    const double magnitude = std::fabs(signed_magnitude);
     const double w2 = norm2(omega);
     const double w_eps = regularize ? 10.0 * magnitude * dt * inv_inertia : 0.0;
     // At rest (w2 = 0) the torque is zero; 0 < w2 <= w_eps^2 needs w_eps > 0, so I is finite.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <string>
 
 #include <cmath>
 
@@ -526,6 +527,35 @@ TEST(NormalLuding, HistoryLivesAsLongAsTheContact) {
   EXPECT_EQ(s.h[0], pressed.overlap);                // keeps the largest overlap
   evaluate_contact(law, geometry(-1e-6), s, 1e-6);
   EXPECT_EQ(s.h[0], 0.0);  // separated: a new contact starts fresh
+}
+
+// A Luding contact on its adhesive branch pulls (elastic force < 0). MFIX's rolling torque has the
+// size mu_r d |k_n delta| and must still oppose each particle's spin: with the signed force it
+// pushed the spin on, a constant torque that spun parcels held by adhesion up without bound.
+TEST(NormalLuding, MfixRollingTorqueOpposesTheSpinOfAContactInTension) {
+  for (const char* rolling : {"mfix", "mfix-21"}) {
+    SCOPED_TRACE(rolling);
+    Laws l = luding();
+    l.rolling = rolling;
+    if (std::string(rolling) == "mfix")
+      l.rolling_p = {{"friction", 0.6}, {"regularize", 0.0}};
+    else
+      l.rolling_p = {{"length_m", 6e-3}, {"regularize", 0.0}};  // = 0.6 d
+    const ContactLaw law = test::law_of(l, false);
+    ContactState s;
+    test::normal_force_with(law, geometry(1e-4), s);  // loaded to delta_max on k1
+    ContactGeometry g = geometry(0.2e-4);             // unloaded onto the adhesive limit
+    g.omega_i = {0, 0, 3.0};
+    g.omega_j = {2.0, 0, 0};
+    const NormalForce fn = test::normal_force_with(law, g, s);
+    ASSERT_NEAR(fn.elastic, -2e3 * 0.2e-4, 1e-12);  // -kc delta: a pull
+    const RollingTorque t = std::string(rolling) == "mfix"
+                                ? test::kernel<RollingMfix>(law, g, fn, 0.0, nullptr, 1e-5)
+                                : test::kernel<RollingMfix21>(law, g, fn, 0.0, nullptr, 1e-5);
+    const double mag = 0.6 * 1e-2 * std::fabs(fn.elastic);
+    EXPECT_NEAR(t.on_i.z, -mag, 1e-15);  // against omega_i = +z
+    EXPECT_NEAR(t.on_j.x, -mag, 1e-15);  // against omega_j = +x
+  }
 }
 
 }  // namespace
