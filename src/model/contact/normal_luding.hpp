@@ -75,7 +75,8 @@ struct NormalLuding {
     out.eta = 2.0 * p.damping_ratio * std::sqrt(g.m_eff * p.k1);
     out.damping = out.eta * g.overlap_rate;
     out.total = out.elastic + out.damping;
-    out.stiffness = p.k1;  // what the tangential and rolling laws scale with
+    out.stiffness = p.k1;         // what the tangential and rolling laws scale with
+    out.adhesion = p.kc * delta;  // f_hys >= -kc delta: f_hys + adhesion >= 0 (Luding's caps)
     return out;
   }
 

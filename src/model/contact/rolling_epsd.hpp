@@ -15,6 +15,7 @@
 #include "core/inline.hpp"
 #include "model/contact/contact_history.hpp"
 #include "model/contact/registry.hpp"
+#include "model/contact/tangential_linear_history.hpp"
 
 namespace silodem {
 struct RollingEpsd {
@@ -29,6 +30,7 @@ struct RollingEpsd {
     double stiffness_factor = 2.25;    // k_r = factor k_n mu_r^2 R_eff^2 (Ai et al. 2011)
     double damping_fraction = 0.3;     // eta_r, fraction of critical rolling damping
     bool limit_sees_cohesion = false;  // limit on |F_n - F_coh| instead of |F_n|
+    bool limit_adds_adhesion = false;  // limit on F_n + kc delta (Luding 2008) instead of |F_n|
   };
 
   SILODEM_HOT static RollingTorque kernel(const Params& p, const ContactGeometry& g,
@@ -43,8 +45,8 @@ struct RollingEpsd {
     rotate_into_tangent_plane(spring, g.n);
     spring -= k_r * dt * w;
     // With the switch: the net compressive force, zero for a bond under tension.
-    const double normal =
-        p.limit_sees_cohesion ? std::max(0.0, fn.total - cohesion) : std::fabs(fn.total);
+    const double normal = TangentialLinearHistory::cap_force(p.limit_sees_cohesion,
+                                                             p.limit_adds_adhesion, fn, cohesion);
     const double limit = p.friction * g.r_eff * normal;
     const double m = norm(spring);
     Vec3 torque;
@@ -83,12 +85,21 @@ struct RollingEpsd {
                     "limit torque on the net compressive force max(0, F_n - F_coh) instead of "
                     "|F_n|",
                     false),
+        Field::flag("limit_adds_adhesion",
+                    "limit torque on max(0, F_n + kc delta), the normal force with the `luding` "
+                    "law's adhesive pull added back (Luding 2008), instead of |F_n|",
+                    false),
     };
   }
 
   static Params configure(const ParamValues& v, const LawContext&) {
-    return {v.number("friction"), v.number("stiffness_factor"), v.number("damping_ratio"),
-            v.flag("limit_sees_cohesion")};
+    const Params p{v.number("friction"), v.number("stiffness_factor"), v.number("damping_ratio"),
+                   v.flag("limit_sees_cohesion"), v.flag("limit_adds_adhesion")};
+    if (p.limit_sees_cohesion && p.limit_adds_adhesion)
+      throw v.error("limit_adds_adhesion",
+                    "true is allowed only with limit_sees_cohesion = false (each picks the normal "
+                    "force of the limit)");
+    return p;
   }
 };
 

@@ -30,6 +30,7 @@ struct NormalForce {
   double total = 0.0;      // elastic + damping, after clipping
   double eta = 0.0;        // normal damping coefficient of this contact (N s/m)
   double stiffness = 0.0;  // contact stiffness d(elastic)/d(delta_n) at this overlap (N/m)
+  double adhesion = 0.0;  // the pull the normal law itself gives at this overlap (luding: kc delta)
 };
 
 struct RollingTorque {

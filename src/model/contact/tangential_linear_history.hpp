@@ -33,12 +33,22 @@ struct TangentialLinearHistory {
     double damping_fraction = 0.0;   // eta_t / eta_n
     double friction = 0.0;           // mu_s
     bool cap_sees_cohesion = false;  // Coulomb cap on |F_el + F_damp - F_coh|, not |F_el + F_damp|
+    bool cap_adds_adhesion = false;  // Coulomb cap on F_n + kc delta (Luding 2008), not |F_n|
   };
+
+  // The normal force the Coulomb cap is a fraction of: |F_n| (MFIX, MercuryDPM), the net
+  // compression F_n - F_coh, or the normal force with the normal law's own adhesive pull added
+  // back, F_n + kc delta (Luding 2008's rule for his adhesive law, as WooDEM implements it).
+  SILODEM_HOT static double cap_force(bool sees_cohesion, bool adds_adhesion, const NormalForce& fn,
+                                      double cohesion) {
+    if (sees_cohesion) return std::max(0.0, fn.total - cohesion);
+    if (adds_adhesion) return std::max(0.0, fn.total + fn.adhesion);
+    return std::fabs(fn.total);
+  }
 
   SILODEM_HOT static Vec3 kernel(const Params& p, const ContactGeometry& g, const NormalForce& fn,
                                  double cohesion, double* h, double dt) {
-    const double cap_force =
-        p.cap_sees_cohesion ? std::max(0.0, fn.total - cohesion) : std::fabs(fn.total);
+    const double normal = cap_force(p.cap_sees_cohesion, p.cap_adds_adhesion, fn, cohesion);
     // k_t = (k_t / k_n) k_n with k_n = d F_el / d delta_n of the normal law at this overlap: the
     // normal spring constant of the linear law; for a Hertz law it grows as sqrt(delta_n).
     const double k_t = p.stiffness_ratio * fn.stiffness;
@@ -48,7 +58,7 @@ struct TangentialLinearHistory {
     const double eta_t = p.damping_fraction * fn.eta;
     Vec3 f = -k_t * spring - eta_t * g.v_t;  // Eq. 8, trial force
     const double f2 = norm2(f);
-    const double cap = p.friction * cap_force;  // Eq. 8 (Coulomb)
+    const double cap = p.friction * normal;  // Eq. 8 (Coulomb)
     if (f2 > cap * cap) {
       f *= cap / std::sqrt(f2);
       spring = f * (-1.0 / k_t);
@@ -75,6 +85,10 @@ struct TangentialLinearHistory {
                     "Coulomb cap on the net compressive force max(0, elastic + damping - cohesive) "
                     "instead of |elastic + damping| (MFIX: false)",
                     false),
+        Field::flag("cap_adds_adhesion",
+                    "Coulomb cap on max(0, F_n + kc delta), the normal force with the `luding` "
+                    "law's adhesive pull added back (Luding 2008), instead of |F_n|",
+                    false),
     };
   }
 
@@ -84,6 +98,11 @@ struct TangentialLinearHistory {
     p.damping_fraction = v.number("damping_ratio");
     p.friction = v.number("friction");
     p.cap_sees_cohesion = v.flag("cap_sees_cohesion");
+    p.cap_adds_adhesion = v.flag("cap_adds_adhesion");
+    if (p.cap_sees_cohesion && p.cap_adds_adhesion)
+      throw v.error("cap_adds_adhesion",
+                    "true is allowed only with cap_sees_cohesion = false (each picks the normal "
+                    "force of the cap)");
     return p;
   }
 };

@@ -5,6 +5,8 @@
 
 #include <limits>
 #include <string>
+#include <tuple>
+#include <utility>
 
 #include <cmath>
 
@@ -556,6 +558,49 @@ TEST(NormalLuding, MfixRollingTorqueOpposesTheSpinOfAContactInTension) {
     EXPECT_NEAR(t.on_i.z, -mag, 1e-15);  // against omega_i = +z
     EXPECT_NEAR(t.on_j.x, -mag, 1e-15);  // against omega_j = +x
   }
+}
+
+// Luding's rule for the friction and rolling limits of his adhesive law (as WooDEM implements it):
+// mu (F_n + kc delta), the normal force with the law's own pull added back, instead of mu |F_n|.
+// On the loading branch the cap grows by kc delta; on the adhesive limit it is zero, where |F_n|
+// gives mu kc delta.
+TEST(NormalLuding, CapsAddTheAdhesivePullBackWhenAsked) {
+  const double k1 = 1e3, kc = 2e3, mu = 0.5, mu_r = 0.2, dt = 1e-5;
+  for (const bool luding_rule : {false, true}) {
+    SCOPED_TRACE(luding_rule);
+    Laws l = luding();
+    l.tangential = "linear_history";
+    l.tangential_p = {{"friction", mu}, {"cap_adds_adhesion", luding_rule ? 1.0 : 0.0}};
+    l.rolling = "epsd";
+    l.rolling_p = {{"friction", mu_r}, {"limit_adds_adhesion", luding_rule ? 1.0 : 0.0}};
+    const ContactLaw law = test::law_of(l, false);
+    const int at_t = law.layout.offset[int(Slot::Tangential)];
+    const int at_r = law.layout.offset[int(Slot::Rolling)];
+    // A sliding, rolling contact: the spring far beyond either cap after one step.
+    auto slide = [&](double overlap, ContactState& s) {
+      ContactGeometry g = geometry(overlap, 0.0, {0, 100.0, 0});
+      g.omega_i = {0, 0, 1e5};
+      const ContactResult r = evaluate_contact(law, g, s, dt);
+      return std::pair{std::fabs(r.force_i.y), norm(s.vec(at_r))};
+    };
+    ContactState s;
+    const double loaded = 1e-4;  // first loading: F_n = k1 delta
+    auto [ft, mr] = slide(loaded, s);
+    const double r_eff = 2.5e-3;
+    const double n_load = luding_rule ? (k1 + kc) * loaded : k1 * loaded;
+    EXPECT_NEAR(ft, mu * n_load, 1e-12);
+    EXPECT_NEAR(mr, mu_r * r_eff * n_load, 1e-12);
+    s.set_vec(at_t, {}), s.set_vec(at_r, {});
+    const double pulled = 0.2e-4;  // unloaded onto the adhesive limit: F_n = -kc delta
+    std::tie(ft, mr) = slide(pulled, s);
+    const double n_pull = luding_rule ? 0.0 : kc * pulled;
+    EXPECT_NEAR(ft, mu * n_pull, 1e-12);
+    EXPECT_NEAR(mr, mu_r * r_eff * n_pull, 1e-12);
+  }
+  Laws both = luding();
+  both.tangential = "linear_history";
+  both.tangential_p = {{"friction", mu}, {"cap_adds_adhesion", 1.0}, {"cap_sees_cohesion", 1.0}};
+  EXPECT_THROW(test::law_of(both, false), InputError);
 }
 
 }  // namespace
