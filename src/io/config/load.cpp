@@ -81,10 +81,19 @@ struct Reader {
       const std::string key(k.str());
       if (std::find(known.begin(), known.end(), key) != known.end()) continue;
       const std::string hint = did_you_mean(key, known);
+      // In a contact-law table the keys depend on the law: a --set that changes only `law` leaves
+      // the old law's keys behind, so say how to replace the table.
+      const auto law = t["law"].value<std::string>();
+      const std::string of_law =
+          law ? fmt::format(
+                    " (the keys of law '{}'; to change the law, replace the whole table: "
+                    "--set '{}={{ law = \"{}\" }}')",
+                    *law, section, *law)
+              : "";
       throw InputError(place(node), section.empty() ? key : section + "." + key,
-                       hint.empty()
-                           ? fmt::format("unknown key; allowed here: {}", fmt::join(known, ", "))
-                           : fmt::format("unknown key; did you mean '{}'?", hint));
+                       hint.empty() ? fmt::format("unknown key; allowed here: {}{}",
+                                                  fmt::join(known, ", "), of_law)
+                                    : fmt::format("unknown key; did you mean '{}'?", hint));
     }
     for (const auto& f : fields) {
       const toml::node* node = t.get(f.key);

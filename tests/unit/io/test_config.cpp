@@ -81,6 +81,15 @@ TEST(Config, UnknownSectionAndLaw) {
   expect_error(t, "epsdd", {"rolling.law", "epsdd", "did you mean 'epsd'"});
 }
 
+TEST(Config, AKeyOfAnotherLawSaysHowToReplaceTheTable) {
+  // What `--set ...rolling.law=none` leaves behind: the old law's friction beside the new law.
+  const std::string t =
+      replace(base(), "law = \"mfix\", friction = 0.6", "law = \"none\", friction = 0.6");
+  expect_error(t, "law = \"none\", friction = 0.6",
+               {"contact.particle_particle.rolling.friction", "unknown key", "law 'none'",
+                "--set 'contact.particle_particle.rolling={ law = \"none\" }'"});
+}
+
 TEST(Config, Mfix21RollingLengthInMetres) {
   // The paper's 0.6 read as MFiX 21.3 reads it (a length) loads; beyond 1 m is refused.
   const std::string from = "law = \"mfix\", friction = 0.6";
