@@ -15,7 +15,6 @@
 #include "core/inline.hpp"
 #include "model/contact/contact_history.hpp"
 #include "model/contact/registry.hpp"
-#include "model/contact/tangential_linear_history.hpp"
 
 namespace silodem {
 struct RollingEpsd {
@@ -44,9 +43,8 @@ struct RollingEpsd {
     w -= dot(w, g.n) * g.n;
     rotate_into_tangent_plane(spring, g.n);
     spring -= k_r * dt * w;
-    // With the switch: the net compressive force, zero for a bond under tension.
-    const double normal = TangentialLinearHistory::cap_force(p.limit_sees_cohesion,
-                                                             p.limit_adds_adhesion, fn, cohesion);
+    const double normal =
+        limit_normal_force(p.limit_sees_cohesion, p.limit_adds_adhesion, fn, cohesion);
     const double limit = p.friction * g.r_eff * normal;
     const double m = norm(spring);
     Vec3 torque;

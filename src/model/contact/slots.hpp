@@ -18,6 +18,10 @@
 // d_ref at which it acts. `NormalForce::stiffness` is what the tangential and rolling laws use as
 // k_n: dF_el/d(delta) of an elastic law, the loading stiffness of a hysteretic one.
 #pragma once
+#include <algorithm>
+#include <cmath>
+
+#include "core/inline.hpp"
 #include "core/vec3.hpp"
 #include "model/contact/contact_geometry.hpp"
 
@@ -32,6 +36,17 @@ struct NormalForce {
   double stiffness = 0.0;  // contact stiffness d(elastic)/d(delta_n) at this overlap (N/m)
   double adhesion = 0.0;  // the pull the normal law itself gives at this overlap (luding: kc delta)
 };
+
+// The normal force a friction or rolling limit is a fraction of (tangential linear_history's
+// cap, epsd's limit): |F_n| by default (MFIX, MercuryDPM); with `sees_cohesion` the net compression
+// F_n - F_coh; with `adds_adhesion` F_n with the normal law's own pull added back, F_n + kc delta
+// (Luding 2008's rule for his adhesive law, as WooDEM implements it). Never negative.
+SILODEM_HOT double limit_normal_force(bool sees_cohesion, bool adds_adhesion, const NormalForce& fn,
+                                      double cohesion) {
+  if (sees_cohesion) return std::max(0.0, fn.total - cohesion);
+  if (adds_adhesion) return std::max(0.0, fn.total + fn.adhesion);
+  return std::fabs(fn.total);
+}
 
 struct RollingTorque {
   Vec3 on_i, on_j;

@@ -36,19 +36,10 @@ struct TangentialLinearHistory {
     bool cap_adds_adhesion = false;  // Coulomb cap on F_n + kc delta (Luding 2008), not |F_n|
   };
 
-  // The normal force the Coulomb cap is a fraction of: |F_n| (MFIX, MercuryDPM), the net
-  // compression F_n - F_coh, or the normal force with the normal law's own adhesive pull added
-  // back, F_n + kc delta (Luding 2008's rule for his adhesive law, as WooDEM implements it).
-  SILODEM_HOT static double cap_force(bool sees_cohesion, bool adds_adhesion, const NormalForce& fn,
-                                      double cohesion) {
-    if (sees_cohesion) return std::max(0.0, fn.total - cohesion);
-    if (adds_adhesion) return std::max(0.0, fn.total + fn.adhesion);
-    return std::fabs(fn.total);
-  }
-
   SILODEM_HOT static Vec3 kernel(const Params& p, const ContactGeometry& g, const NormalForce& fn,
                                  double cohesion, double* h, double dt) {
-    const double normal = cap_force(p.cap_sees_cohesion, p.cap_adds_adhesion, fn, cohesion);
+    const double normal =
+        limit_normal_force(p.cap_sees_cohesion, p.cap_adds_adhesion, fn, cohesion);
     // k_t = (k_t / k_n) k_n with k_n = d F_el / d delta_n of the normal law at this overlap: the
     // normal spring constant of the linear law; for a Hertz law it grows as sqrt(delta_n).
     const double k_t = p.stiffness_ratio * fn.stiffness;
