@@ -8,7 +8,7 @@ namespace fs = std::filesystem;
 namespace silodem::app {
 
 Observers::Observers(const Case& c, const fs::path& out, double t0) : c_(c), out_(out), t0_(t0) {
-  for (auto& p : make_probes(c)) {
+  for (auto& p : make_probes(c.probes, c.probe_site())) {
     files_.push_back(std::make_unique<CsvWriter>(
         (out / fmt::format("probe_{}.csv", p->name())).string(), p->columns()));
     probes_.push_back(std::move(p));
@@ -23,7 +23,7 @@ Observers::Observers(const Case& c, const fs::path& out, double t0) : c_(c), out
 Observers::Observers(const Case& c, const fs::path& out, double t0, ByteReader& r)
     : c_(c), out_(out), t0_(t0) {
   r.tag("OBSV");
-  auto made = make_probes(c);
+  auto made = make_probes(c.probes, c.probe_site());
   if (r.get<std::uint64_t>() != made.size())
     throw std::runtime_error("checkpoint: the case has a different set of probes");
   for (auto& p : made) {

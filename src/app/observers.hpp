@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "io/config/case.hpp"
 #include "io/csv.hpp"
 #include "io/vtk.hpp"
 #include "probes/registry.hpp"

@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "core/bytes.hpp"
+#include "io/config/case.hpp"
 #include "scenario/layered_filling.hpp"
 #include "scenario/setup.hpp"
 

@@ -4,7 +4,7 @@
 #pragma once
 #include <string>
 
-#include "scenario/case.hpp"
+#include "scenario/outlet_stats.hpp"
 
 namespace silodem {
 

@@ -4,6 +4,7 @@
 #pragma once
 #include <string>
 
+#include "io/config/case.hpp"
 #include "scenario/setup.hpp"
 
 namespace silodem {

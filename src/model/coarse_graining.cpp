@@ -90,4 +90,29 @@ double effective_mass(double m_i, double m_j) {
   return m_j > 0.0 ? m_i * m_j / (m_i + m_j) : m_i;
 }
 
+const std::vector<Bound<CoarseGraining>>& coarse_graining_fields() {
+  using F = Field;
+  using S = CoarseGraining;
+  static const std::vector<Bound<S>> b = {
+      bind(F::number("k", "each simulated sphere stands for k^3 particles; k = 1 is plain DEM")
+               .at_least(1)
+               .at_most(100),
+           &S::k),
+      bind(F::number("cohesion_exponent", "alpha in F_L,cg = k^alpha F_L (paper: 3; Rumpf: 2)")
+               .at_least(2)
+               .at_most(3),
+           &S::cohesion_exponent),
+      bind<S>(F::text("restitution_policy",
+                      "e_cg: Eq. 11 (energy), Eq. 11 clamped to restitution_floor, or e unchanged",
+                      {"energy", "energy-clamped", "none"},
+                      restitution_policy_name(S{}.restitution_policy)),
+              [](S& s, const ParamValues& v) {
+                s.restitution_policy = restitution_policy_from_name(v.string("restitution_policy"));
+              }),
+      bind(F::number("restitution_floor", "e_min for energy-clamped").above(0).at_most(1),
+           &S::restitution_floor),
+  };
+  return b;
+}
+
 }  // namespace silodem

@@ -3,6 +3,9 @@
 // quantity that changes with k is derived here and nowhere else.
 #pragma once
 #include <string>
+#include <vector>
+
+#include "core/schema.hpp"
 
 namespace silodem {
 
@@ -46,5 +49,8 @@ double normal_damping(double k_n, double m_eff, double e);
 double collision_time(double k_n, double m_eff, double e);
 // Effective mass of a pair; pass m_j = 0 for a wall (m_eff = m_i).
 double effective_mass(double m_i, double m_j);
+
+// The [coarse_graining] keys, bound to CoarseGraining's members (defaults: above).
+const std::vector<Bound<CoarseGraining>>& coarse_graining_fields();
 
 }  // namespace silodem

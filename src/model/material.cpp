@@ -38,4 +38,71 @@ CoalDerived derive(const CoalProperties& c) {
   return d;
 }
 
+const std::vector<Bound<CoalProperties>>& coal_fields() {
+  using F = Field;
+  using S = CoalProperties;
+  static const std::vector<Bound<S>> b = {
+      bind(F::text("name", "name used by particles, lattices and reports", {}), &S::name),
+      unbound<S>(F::text("symbol",
+                         "letter(s) used in scenario names such as \"L3-I2\" (default: first "
+                         "letter of the name)",
+                         {}, "-")),
+      bind(F::number("diameter_mm", "average particle diameter (the DEM size before k)", "mm",
+                     units::mm)
+               .needed()
+               .above(0)
+               .at_most(1e4),
+           &S::diameter),
+      bind(F::number("sauter_diameter_mm",
+                     "Sauter mean diameter d_sv of Eq. 14 (default: diameter_mm)", "mm", units::mm)
+               .above(0)
+               .at_most(1e4),
+           &S::sauter_diameter),
+      bind(F::number("true_density_kg_m3", "particle (true) density", "kg/m^3")
+               .needed()
+               .above(0)
+               .at_most(3e4),
+           &S::true_density),
+      bind(F::number("bulk_density_kg_m3", "measured bulk density (needed for cohesion)", "kg/m^3")
+               .above(0)
+               .at_most(3e4),
+           &S::bulk_density),
+      bind(
+          F::number("cohesion_kpa", "cohesion C of the yield locus (Table 1 says N; it is kPa, E1)",
+                    "kPa", units::kPa)
+              .at_least(0)
+              .at_most(1e4)
+              .without_default(),
+          &S::cohesion),
+      bind(F::number("friction_angle_deg", "internal friction angle", "deg", units::deg)
+               .above(0)
+               .below(90),
+           &S::friction_angle),
+      bind(F::number("moisture_percent", "moisture content M", "%", units::percent)
+               .at_least(0)
+               .below(100)
+               .without_default(),
+           &S::moisture),
+      bind(F::number("heating_value_kcal_kg", "lower heating value (Eq. 17)", "kcal/kg")
+               .at_least(0)
+               .at_most(1e5),
+           &S::heating_value),
+      bind<S>(F::number("cohesion_force_n", "F_L of one original particle, replacing Eq. 14", "N")
+                  .at_least(0)
+                  .at_most(1e6),
+              [](S& s, const ParamValues& v) {
+                s.cohesion_force_override = v.number("cohesion_force_n");
+              }),
+      unbound<S>(F::number_list("sieve_diameters_mm",
+                                "size classes of a measured distribution (DEM sizes before k)",
+                                "mm", units::mm)
+                     .above(0)
+                     .at_most(1e4)),
+      unbound<S>(F::number_list("sieve_mass_fractions", "mass fraction of each size class (sum 1)")
+                     .at_least(0)
+                     .at_most(1)),
+  };
+  return b;
+}
+
 }  // namespace silodem

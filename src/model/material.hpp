@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/schema.hpp"
+
 namespace silodem {
 
 // One sieve class of a measured size distribution (original, not coarse-grained, size).
@@ -45,5 +47,10 @@ double moisture_cohesion_force(double sauter_diameter, double sigma_t, double ep
 double sphere_mass(double diameter, double density);
 
 CoalDerived derive(const CoalProperties& coal);
+
+// The [[coal]] keys, bound to CoalProperties' members. `symbol` and the sieve lists are read by the
+// loader (the symbols of all coals and the size classes are checked together); a measured input
+// not given stays 0 and is asked for only when a cohesion law needs it.
+const std::vector<Bound<CoalProperties>>& coal_fields();
 
 }  // namespace silodem

@@ -32,8 +32,8 @@ class AdhesionProbe final : public Probe {
 
 }  // namespace
 
-std::unique_ptr<Probe> make_adhesion_probe(const Case& c) {
-  return std::make_unique<AdhesionProbe>(c.probes.adhesion_threshold);
+std::unique_ptr<Probe> make_adhesion_probe(const ProbeSpec& spec, const ProbeSite&) {
+  return std::make_unique<AdhesionProbe>(spec.adhesion_threshold);
 }
 
 }  // namespace silodem

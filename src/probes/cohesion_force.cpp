@@ -32,7 +32,7 @@ class CohesionForceProbe final : public Probe {
 
 }  // namespace
 
-std::unique_ptr<Probe> make_cohesion_force_probe(const Case&) {
+std::unique_ptr<Probe> make_cohesion_force_probe(const ProbeSpec&, const ProbeSite&) {
   return std::make_unique<CohesionForceProbe>();
 }
 

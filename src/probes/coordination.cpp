@@ -27,7 +27,7 @@ class CoordinationProbe final : public Probe {
 
 }  // namespace
 
-std::unique_ptr<Probe> make_coordination_probe(const Case&) {
+std::unique_ptr<Probe> make_coordination_probe(const ProbeSpec&, const ProbeSite&) {
   return std::make_unique<CoordinationProbe>();
 }
 

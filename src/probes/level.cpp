@@ -28,8 +28,8 @@ class LevelProbe final : public Probe {
 
 }  // namespace
 
-std::unique_ptr<Probe> make_level_probe(const Case& c) {
-  return std::make_unique<LevelProbe>(c.probes.level_radius);
+std::unique_ptr<Probe> make_level_probe(const ProbeSpec& spec, const ProbeSite&) {
+  return std::make_unique<LevelProbe>(spec.level_radius);
 }
 
 }  // namespace silodem

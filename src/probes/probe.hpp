@@ -11,7 +11,7 @@
 
 #include "core/bytes.hpp"
 #include "engine/simulation.hpp"
-#include "scenario/case.hpp"
+#include "probes/probe_spec.hpp"
 
 namespace silodem {
 

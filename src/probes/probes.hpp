@@ -7,11 +7,11 @@
 
 namespace silodem {
 
-std::unique_ptr<Probe> make_slab_probe(const Case& c);
-std::unique_ptr<Probe> make_velocity_profile_probe(const Case& c);
-std::unique_ptr<Probe> make_adhesion_probe(const Case& c);
-std::unique_ptr<Probe> make_cohesion_force_probe(const Case& c);
-std::unique_ptr<Probe> make_level_probe(const Case& c);
-std::unique_ptr<Probe> make_coordination_probe(const Case& c);
+std::unique_ptr<Probe> make_slab_probe(const ProbeSpec& spec, const ProbeSite& site);
+std::unique_ptr<Probe> make_velocity_profile_probe(const ProbeSpec& spec, const ProbeSite& site);
+std::unique_ptr<Probe> make_adhesion_probe(const ProbeSpec& spec, const ProbeSite& site);
+std::unique_ptr<Probe> make_cohesion_force_probe(const ProbeSpec& spec, const ProbeSite& site);
+std::unique_ptr<Probe> make_level_probe(const ProbeSpec& spec, const ProbeSite& site);
+std::unique_ptr<Probe> make_coordination_probe(const ProbeSpec& spec, const ProbeSite& site);
 
 }  // namespace silodem

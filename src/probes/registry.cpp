@@ -21,10 +21,10 @@ const std::vector<ProbeEntry>& probe_registry() {
   return table;
 }
 
-std::vector<std::unique_ptr<Probe>> make_probes(const Case& c) {
+std::vector<std::unique_ptr<Probe>> make_probes(const ProbeSpec& spec, const ProbeSite& site) {
   std::vector<std::unique_ptr<Probe>> out;
-  if (c.probes.every <= 0) return out;
-  for (const auto& e : probe_registry()) out.push_back(e.make(c));
+  if (spec.every <= 0) return out;
+  for (const auto& e : probe_registry()) out.push_back(e.make(spec, site));
   return out;
 }
 

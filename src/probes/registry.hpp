@@ -12,11 +12,11 @@ namespace silodem {
 struct ProbeEntry {
   std::string name;
   std::string doc;
-  std::unique_ptr<Probe> (*make)(const Case& c);
+  std::unique_ptr<Probe> (*make)(const ProbeSpec& spec, const ProbeSite& site);
 };
 
 const std::vector<ProbeEntry>& probe_registry();
 // The probes of a case (all registered ones when [probes] every > 0, none otherwise).
-std::vector<std::unique_ptr<Probe>> make_probes(const Case& c);
+std::vector<std::unique_ptr<Probe>> make_probes(const ProbeSpec& spec, const ProbeSite& site);
 
 }  // namespace silodem

@@ -38,8 +38,8 @@ class SlabProbe final : public Probe {
 
 }  // namespace
 
-std::unique_ptr<Probe> make_slab_probe(const Case& c) {
-  return std::make_unique<SlabProbe>(c.probes);
+std::unique_ptr<Probe> make_slab_probe(const ProbeSpec& spec, const ProbeSite&) {
+  return std::make_unique<SlabProbe>(spec);
 }
 
 }  // namespace silodem

@@ -79,8 +79,8 @@ class VelocityProfileProbe final : public Probe {
 
 }  // namespace
 
-std::unique_ptr<Probe> make_velocity_profile_probe(const Case& c) {
-  return std::make_unique<VelocityProfileProbe>(c.probes, c.silo.geometry.top_radius());
+std::unique_ptr<Probe> make_velocity_profile_probe(const ProbeSpec& spec, const ProbeSite& site) {
+  return std::make_unique<VelocityProfileProbe>(spec, site.silo_radius);
 }
 
 }  // namespace silodem

@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: MIT
-// A case as plain data, in SI units, produced by io/config from a TOML file. Places in the file
-// are kept so that errors found while setting up (overlaps, a too large dt) can name the line.
+// The part of a case that the scenario layer reads, as plain data in SI units: the time stepping,
+// the coals, the contact model, the bodies or the silo, its fill and its discharge. io/config
+// makes it from a TOML file, as part of its `Case` (which adds what the probes and the writers
+// read). Each spec struct's default member values are the case file's defaults: each key is bound
+// to its member once, in the field lists below (scenario/case.cpp), which io/config validates
+// against and generates docs/config.md from. Places in the file are kept so that errors found
+// while setting up (overlaps, a too large dt) can name the line.
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/schema.hpp"
 #include "core/vec3.hpp"
 #include "model/coarse_graining.hpp"
 #include "model/contact/contact_model.hpp"
@@ -53,34 +59,6 @@ struct LatticeSpec {
   std::string key;
 };
 
-struct OutputSpec {
-  long every = 0;                  // steps between rows of trajectory.csv; 0 = final state only
-  std::vector<std::uint64_t> ids;  // particles to write; empty = all
-  double vtk_interval = 0.0;       // s between ParaView frames of a silo run; 0 = none
-  std::string measured;            // measured outlet data (CSV), resolved against the case file
-  SourcePlace measured_place;
-};
-
-// Measured outlet data (optional): times with a mass flow rate and/or a calorific value.
-struct MeasuredData {
-  std::vector<double> t;          // s since the valve opened
-  std::vector<double> rate;       // kg/s (NaN where not measured)
-  std::vector<double> calorific;  // kcal/kg (NaN where not measured)
-  bool has_rate = false, has_calorific = false;
-};
-
-// Probes of a silo run (src/probes), sampled every `every` steps of the discharge.
-struct ProbeSpec {
-  long every = 1000;  // steps; 0 = no probes
-  std::vector<double> slab_times{0.0, 0.25, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 40.0, 60.0, 80.0};
-  double slab_thickness = 0.02;                        // m
-  std::vector<double> profile_heights{0.1, 0.2, 0.3};  // m above the outlet
-  double profile_bin = 0.01;                           // m
-  double profile_from = 0.0, profile_to = 1e9;         // s, averaging window
-  double adhesion_threshold = 1e-3;                    // N
-  double level_radius = 0.02;                          // m around the axis
-};
-
 enum class FillMode { Mass, Volume };
 
 struct SiloSpec {
@@ -107,7 +85,7 @@ struct DischargeSpec {
   double target_fraction = 0.995;  // of the filled mass: discharged = done
 };
 
-struct Case {
+struct ScenarioCase {
   std::string path;
   std::string title;
   TimeSpec time;
@@ -118,13 +96,18 @@ struct Case {
   std::vector<WallSpec> walls;
   std::vector<ParticleSpec> particles;
   std::vector<LatticeSpec> lattices;
-  OutputSpec output;
-  MeasuredData measured;
-  ProbeSpec probes;
   SiloSpec silo;
   FillSpec fill;
   DischargeSpec discharge;
   std::vector<std::string> coal_symbols;  // per coal, for the scenario notation
 };
+
+// The keys of each section, bound to their members (scenario/case.cpp). ParticleSpec and
+// LatticeSpec name their coal, which the loader looks up; [silo] is silo_fields().
+const std::vector<Bound<TimeSpec>>& time_fields();            // [simulation]
+const std::vector<Bound<FillSpec>>& fill_fields();            // [fill]
+const std::vector<Bound<DischargeSpec>>& discharge_fields();  // [discharge]
+const std::vector<Bound<ParticleSpec>>& particle_fields();    // [[particle]]
+const std::vector<Bound<LatticeSpec>>& lattice_fields();      // [[lattice]]
 
 }  // namespace silodem

@@ -180,7 +180,7 @@ void FillProgress::load(ByteReader& r) {
   r.get(first_id), r.get(rng);
 }
 
-FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& segment_coal,
+FillReport fill_silo(Simulation& sim, const ScenarioCase& c, const std::vector<int>& segment_coal,
                      Random& rng, const Progress& progress, const FillCheckpoint& checkpoint,
                      const FillProgress* from) {
   const SiloGeometry& g = c.silo.geometry;

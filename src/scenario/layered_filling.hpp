@@ -64,7 +64,7 @@ using FillCheckpoint = std::function<void(const FillProgress&)>;
 // Fills `sim` (which already holds the silo walls with the valve closed). `segment_coal` gives
 // the coal of each filled segment, bottom first. With `from`, continues an interrupted fill (sim
 // loaded from the same checkpoint).
-FillReport fill_silo(Simulation& sim, const Case& c, const std::vector<int>& segment_coal,
+FillReport fill_silo(Simulation& sim, const ScenarioCase& c, const std::vector<int>& segment_coal,
                      Random& rng, const Progress& progress, const FillCheckpoint& checkpoint = {},
                      const FillProgress* from = nullptr);
 

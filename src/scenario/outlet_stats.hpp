@@ -9,6 +9,14 @@
 
 namespace silodem {
 
+// Measured outlet data (optional): times with a mass flow rate and/or a calorific value.
+struct MeasuredData {
+  std::vector<double> t;          // s since the valve opened
+  std::vector<double> rate;       // kg/s (NaN where not measured)
+  std::vector<double> calorific;  // kcal/kg (NaN where not measured)
+  bool has_rate = false, has_calorific = false;
+};
+
 struct OutletBin {
   double t_start = 0.0, t_end = 0.0;
   double mass = 0.0, rate = 0.0, cumulative = 0.0;

@@ -23,7 +23,7 @@ struct Body {
   std::string key;
 };
 
-std::vector<Body> bodies_of(const Case& c) {
+std::vector<Body> bodies_of(const ScenarioCase& c) {
   std::vector<Body> out;
   for (const auto& p : c.particles) {
     const double d = p.diameter > 0 ? p.diameter : c.cg.diameter(c.coals[p.coal].diameter);
@@ -42,7 +42,7 @@ std::vector<Body> bodies_of(const Case& c) {
 
 }  // namespace
 
-CaseReport derive_case(const Case& c, ContactModel* model_out) {
+CaseReport derive_case(const ScenarioCase& c, ContactModel* model_out) {
   CaseReport r;
   r.k = c.cg.k;
   std::vector<double> cohesion_cg;
@@ -146,7 +146,7 @@ CaseReport derive_case(const Case& c, ContactModel* model_out) {
   return r;
 }
 
-SimulationSettings settings_of(const Case& c, const CaseReport& report, double d_min,
+SimulationSettings settings_of(const ScenarioCase& c, const CaseReport& report, double d_min,
                                int threads_override) {
   SimulationSettings s;
   s.dt = report.time_step;
@@ -168,14 +168,14 @@ SimulationSettings settings_of(const Case& c, const CaseReport& report, double d
 namespace {
 
 // The [[wall]] tables of a case.
-void add_case_walls(Simulation& sim, const Case& c) {
+void add_case_walls(Simulation& sim, const ScenarioCase& c) {
   for (const auto& w : c.walls)
     for (auto& surface : find_wall_type(w.type)->make(w.values)) sim.add_wall(std::move(surface));
 }
 
 }  // namespace
 
-std::unique_ptr<Simulation> build_silo_simulation(const Case& c, const CaseReport& report,
+std::unique_ptr<Simulation> build_silo_simulation(const ScenarioCase& c, const CaseReport& report,
                                                   ContactModel model, std::size_t* valve_index,
                                                   int threads_override) {
   double d_min = 1e300;
@@ -190,7 +190,7 @@ std::unique_ptr<Simulation> build_silo_simulation(const Case& c, const CaseRepor
   return sim;
 }
 
-std::unique_ptr<Simulation> build_simulation(const Case& c, const CaseReport& report,
+std::unique_ptr<Simulation> build_simulation(const ScenarioCase& c, const CaseReport& report,
                                              ContactModel model, int threads_override) {
   double d_min = 1e300;
   for (const auto& cr : report.coals) d_min = std::min(d_min, cr.cg_diameter);

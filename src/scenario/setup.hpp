@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// From a Case to the derived numbers (what `check` prints) and to a ready Simulation.
+// From a ScenarioCase to the derived numbers (what `check` prints) and to a ready Simulation.
 #pragma once
 #include <memory>
 #include <string>
@@ -43,20 +43,20 @@ struct CaseReport {
 };
 
 // Derives every number and checks the time step (refuses dt > t_col / 10).
-CaseReport derive_case(const Case& c, ContactModel* model_out = nullptr);
+CaseReport derive_case(const ScenarioCase& c, ContactModel* model_out = nullptr);
 
 // Time step, gravity, skin (a fraction of the smallest CG diameter d_min), guards and threads of a
 // case (threads_override > 0 replaces the case's).
-SimulationSettings settings_of(const Case& c, const CaseReport& report, double d_min,
+SimulationSettings settings_of(const ScenarioCase& c, const CaseReport& report, double d_min,
                                int threads_override);
 
 // Silo case: a simulation holding the silo walls with the valve closed, and no particles yet.
-std::unique_ptr<Simulation> build_silo_simulation(const Case& c, const CaseReport& report,
+std::unique_ptr<Simulation> build_silo_simulation(const ScenarioCase& c, const CaseReport& report,
                                                   ContactModel model, std::size_t* valve_index,
                                                   int threads_override = 0);
 
 // Builds the simulation: walls, placed and lattice particles (refusing overlaps).
-std::unique_ptr<Simulation> build_simulation(const Case& c, const CaseReport& report,
+std::unique_ptr<Simulation> build_simulation(const ScenarioCase& c, const CaseReport& report,
                                              ContactModel model, int threads_override = 0);
 
 }  // namespace silodem

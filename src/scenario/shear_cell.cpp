@@ -72,8 +72,9 @@ void check_shear_spec(const ShearTestSpec& spec) {
                                    s / 1e3, spec.preshear / 1e3));
 }
 
-ShearTestResult run_shear_test(const Case& c, const CaseReport& report, const ContactModel& model,
-                               int coal, const ShearTestSpec& spec, const ShearProgress& progress) {
+ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
+                               const ContactModel& model, int coal, const ShearTestSpec& spec,
+                               const ShearProgress& progress) {
   check_shear_spec(spec);
   const CoalProperties& coal_p = c.coals[std::size_t(coal)];
   const CoalReport& cr = report.coals[std::size_t(coal)];

@@ -78,7 +78,8 @@ void check_shear_spec(const ShearTestSpec& spec);
 
 // Runs the test on coal `coal` of the case (report and model from derive_case); checks the spec
 // first.
-ShearTestResult run_shear_test(const Case& c, const CaseReport& report, const ContactModel& model,
-                               int coal, const ShearTestSpec& spec, const ShearProgress& progress);
+ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
+                               const ContactModel& model, int coal, const ShearTestSpec& spec,
+                               const ShearProgress& progress);
 
 }  // namespace silodem

@@ -95,4 +95,33 @@ SiloWalls make_silo_walls(const SiloGeometry& g) {
   return s;
 }
 
+const std::vector<Bound<SiloGeometry>>& silo_fields() {
+  using F = Field;
+  using S = SiloGeometry;
+  static const std::vector<Bound<S>> b = {
+      bind(
+          F::number("outlet_diameter_mm", "outlet diameter", "mm", units::mm).above(0).at_most(1e4),
+          &S::outlet_diameter),
+      bind(F::number("cone_height_mm", "height of the conical hopper", "mm", units::mm)
+               .above(0)
+               .at_most(1e5),
+           &S::cone_height),
+      bind(F::number("cylinder_diameter_mm", "diameter of the cylinder (top of the cone)", "mm",
+                     units::mm)
+               .above(0)
+               .at_most(1e5),
+           &S::cylinder_diameter),
+      bind(F::number("cylinder_height_mm", "height of the cylinder above the cone", "mm", units::mm)
+               .at_least(0)
+               .at_most(1e5),
+           &S::cylinder_height),
+      bind(
+          F::number("valve_gap_mm", "distance of the valve plate below the outlet", "mm", units::mm)
+              .at_least(0)
+              .at_most(1e3),
+          &S::valve_gap),
+  };
+  return b;
+}
+
 }  // namespace silodem

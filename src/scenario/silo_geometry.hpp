@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/schema.hpp"
 #include "core/vec3.hpp"
 #include "engine/walls/wall.hpp"
 
@@ -49,5 +50,8 @@ struct SiloWalls {
 
 // Cone face, cylinder face, outlet-rim edge and valve plate.
 SiloWalls make_silo_walls(const SiloGeometry& g);
+
+// The [silo] keys, bound to SiloGeometry's members (defaults: the paper's silo, above).
+const std::vector<Bound<SiloGeometry>>& silo_fields();
 
 }  // namespace silodem

@@ -205,6 +205,15 @@ struct Reader {
     return v;
   }
 
+  // Validates table `t` against the keys bound to S's members and stores the given ones in `s`.
+  template <class S>
+  ParamValues read_into(S& s, const toml::table& t, const std::vector<Bound<S>>& bound,
+                        const std::string& section) {
+    ParamValues v = read(t, fields_of(bound), section);
+    assign(s, bound, v);
+    return v;
+  }
+
   const toml::table& table_at(const toml::node& n, const std::string& key) {
     if (!n.is_table()) throw InputError(place(n), key, "must be a table");
     return *n.as_table();
@@ -329,31 +338,12 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
 
   // [simulation]
   {
-    const ParamValues v = r.read(single("simulation"), section("simulation").fields, "simulation");
-    c.time.end_time = v.number("end_time");
-    c.time.time_step = v.number("time_step");
-    c.time.steps_per_collision = v.number("steps_per_collision");
-    if (v.was_given("gravity")) c.time.gravity = v.vector("gravity");
-    c.time.skin = v.number("skin");
-    c.time.threads = int(v.number("threads"));
-    c.time.reorder_every = int(v.number("reorder_every"));
-    c.time.seed = std::uint64_t(v.number("seed"));
-    c.time.max_speed = v.number("max_speed");
-    c.time.max_overlap = v.number("max_overlap");
-    c.time.checkpoint_interval = v.number("checkpoint_interval");
-    c.time.checkpoint_wall_interval = v.number("checkpoint_wall_interval");
+    const ParamValues v = r.read_into(c.time, single("simulation"), time_fields(), "simulation");
     c.time.time_step_place = v.places.count("time_step") ? v.places.at("time_step") : v.place;
     c.time.steps_place = v.place;
   }
   // [coarse_graining]
-  {
-    const ParamValues v =
-        r.read(single("coarse_graining"), section("coarse_graining").fields, "coarse_graining");
-    c.cg.k = v.number("k");
-    c.cg.cohesion_exponent = v.number("cohesion_exponent");
-    c.cg.restitution_policy = restitution_policy_from_name(v.string("restitution_policy"));
-    c.cg.restitution_floor = v.number("restitution_floor");
-  }
+  { r.read_into(c.cg, single("coarse_graining"), coarse_graining_fields(), "coarse_graining"); }
   // [[coal]]
   std::vector<std::string> missing_measured;  // per coal: the first Eq. 14-16 input not given
   const auto coal_tables = r.tables(root, "coal");
@@ -361,17 +351,11 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     throw InputError({file, 1, 1}, "coal", "missing: at least one [[coal]] table is required");
   for (std::size_t i = 0; i < coal_tables.size(); ++i) {
     const std::string sec = fmt::format("coal[{}]", i);
-    const ParamValues v = r.read(*coal_tables[i], section("coal").fields, sec);
     CoalProperties p;
-    p.name = v.string("name");
+    const ParamValues v = r.read_into(p, *coal_tables[i], coal_fields(), sec);
     for (const auto& other : c.coals)
       if (other.name == p.name) throw v.error("name", "= \"" + p.name + "\" is used by two coals");
-    p.diameter = v.number("diameter_mm");
-    p.sauter_diameter =
-        v.was_given("sauter_diameter_mm") ? v.number("sauter_diameter_mm") : p.diameter;
-    p.true_density = v.number("true_density_kg_m3");
-    p.heating_value = v.number("heating_value_kcal_kg");
-    if (v.was_given("cohesion_force_n")) p.cohesion_force_override = v.number("cohesion_force_n");
+    if (!v.was_given("sauter_diameter_mm")) p.sauter_diameter = p.diameter;
     // The measured inputs of Eq. 14-16 are needed only if a cohesion law uses the force: checked
     // after [contact.*] (a dry coal needs none of them).
     std::string missing;
@@ -381,16 +365,12 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     const bool measured_needed = !p.cohesion_force_override && missing.empty();
     missing_measured.push_back(p.cohesion_force_override ? std::string() : missing);
     if (v.was_given("bulk_density_kg_m3")) {
-      p.bulk_density = v.number("bulk_density_kg_m3");
       if (p.bulk_density > p.true_density)
         throw v.error("bulk_density_kg_m3",
                       fmt::format("= {:g} is above true_density_kg_m3 = {:g}; allowed (0, {:g}] "
                                   "kg/m^3 (a bulk cannot be denser than its particles)",
                                   p.bulk_density, p.true_density, p.true_density));
     }
-    if (v.was_given("cohesion_kpa")) p.cohesion = v.number("cohesion_kpa");
-    if (v.was_given("friction_angle_deg")) p.friction_angle = v.number("friction_angle_deg");
-    if (v.was_given("moisture_percent")) p.moisture = v.number("moisture_percent");
     if (measured_needed) {
       const double eps = porosity(p.bulk_density, p.true_density, p.moisture);
       if (!(eps > 0.0 && eps < 1.0))
@@ -486,13 +466,9 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     const auto ps = r.tables(root, "particle");
     for (std::size_t i = 0; i < ps.size(); ++i) {
       const std::string sec = fmt::format("particle[{}]", i);
-      const ParamValues v = r.read(*ps[i], section("particle").fields, sec);
       ParticleSpec p;
+      const ParamValues v = r.read_into(p, *ps[i], particle_fields(), sec);
       p.coal = coal_index(c, v, "coal");
-      p.x = v.vector("position");
-      p.v = v.vector("velocity");
-      p.omega = v.vector("angular_velocity");
-      p.diameter = v.was_given("diameter_mm") ? v.number("diameter_mm") : 0.0;
       p.place = v.places.at("position");
       p.key = sec;
       c.particles.push_back(p);
@@ -500,12 +476,9 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     const auto ls = r.tables(root, "lattice");
     for (std::size_t i = 0; i < ls.size(); ++i) {
       const std::string sec = fmt::format("lattice[{}]", i);
-      const ParamValues v = r.read(*ls[i], section("lattice").fields, sec);
       LatticeSpec l;
+      const ParamValues v = r.read_into(l, *ls[i], lattice_fields(), sec);
       l.coal = coal_index(c, v, "coal");
-      l.origin = v.vector("origin");
-      l.spacing = v.number("spacing");
-      l.v = v.vector("velocity");
       const Vec3 n = v.vector("count");
       for (double x : {n.x, n.y, n.z})
         if (x < 1 || x > 1e4 || x != std::floor(x))
@@ -523,13 +496,8 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
   // [silo], [fill], [discharge]
   if (root.get("silo")) {
     c.silo.present = true;
-    const ParamValues v = r.read(single("silo"), section("silo").fields, "silo");
     auto& g = c.silo.geometry;
-    g.outlet_diameter = v.number("outlet_diameter_mm");
-    g.cone_height = v.number("cone_height_mm");
-    g.cylinder_diameter = v.number("cylinder_diameter_mm");
-    g.cylinder_height = v.number("cylinder_height_mm");
-    g.valve_gap = v.number("valve_gap_mm");
+    const ParamValues v = r.read_into(g, single("silo"), silo_fields(), "silo");
     double d_min = 1e300;
     for (const auto& coal : c.coals) {
       d_min = std::min(d_min, coal.diameter);
@@ -550,15 +518,8 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     const toml::node* fn = root.get("fill");
     if (!fn)
       throw InputError({file, 1, 1}, "fill", "missing: a silo case needs [fill] with a scenario");
-    const ParamValues f = r.read(single("fill"), section("fill").fields, "fill");
-    c.fill.scenario = f.string("scenario");
+    const ParamValues f = r.read_into(c.fill, single("fill"), fill_fields(), "fill");
     c.fill.scenario_place = f.places.count("scenario") ? f.places.at("scenario") : f.place;
-    c.fill.segments = int(f.number("segments"));
-    c.fill.fill_height = f.number("fill_height_mm");
-    c.fill.mode = f.string("mode") == "volume" ? FillMode::Volume : FillMode::Mass;
-    c.fill.lattice_gap = f.number("lattice_gap");
-    c.fill.settle_ke = f.number("settle_ke_per_particle_j");
-    c.fill.settle_max_time = f.number("settle_max_time");
     if (c.fill.fill_height > g.total_height())
       throw f.error("fill_height_mm",
                     fmt::format("= {:g} is above the silo ({:g} mm)", c.fill.fill_height * 1e3,
@@ -585,31 +546,17 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
         if (c.coals[k].bulk_density <= 0)
           throw InputError(c.coal_places[k], fmt::format("coal[{}].bulk_density_kg_m3", k),
                            "missing: filling by mass needs the measured bulk density");
-    const ParamValues d = r.read(single("discharge"), section("discharge").fields, "discharge");
-    c.discharge.bin = d.number("bin");
-    c.discharge.sink_depth = d.number("sink_depth_mm");
-    c.discharge.stall_time = d.number("stall_time");
-    c.discharge.max_time = d.number("max_time");
-    c.discharge.target_fraction = d.number("target_fraction");
+    const ParamValues d =
+        r.read_into(c.discharge, single("discharge"), discharge_fields(), "discharge");
     if (c.discharge.max_time / c.discharge.bin > 1e7)
       throw d.error("bin", fmt::format("= {:g} s gives more than 1e7 bins over max_time = {:g} s",
                                        c.discharge.bin, c.discharge.max_time));
-    const ParamValues pr = r.read(single("probes"), section("probes").fields, "probes");
     ProbeSpec& ps = c.probes;
-    ps.every = long(pr.number("every"));
-    if (!pr.lists.at("slab_times").empty()) ps.slab_times = pr.lists.at("slab_times");
+    const ParamValues pr = r.read_into(ps, single("probes"), probe_fields(), "probes");
     std::sort(ps.slab_times.begin(), ps.slab_times.end());
-    ps.slab_thickness = pr.number("slab_thickness_mm");
-    if (!pr.lists.at("profile_heights_mm").empty())
-      ps.profile_heights = pr.lists.at("profile_heights_mm");
-    ps.profile_bin = pr.number("profile_bin_mm");
-    ps.profile_from = pr.number("profile_from");
-    ps.profile_to = pr.number("profile_to");
     if (ps.profile_to <= ps.profile_from)
       throw pr.error("profile_to", fmt::format("= {:g} s must be after profile_from = {:g} s",
                                                ps.profile_to, ps.profile_from));
-    ps.adhesion_threshold = pr.number("adhesion_threshold");
-    ps.level_radius = pr.number("level_radius_mm");
   } else {
     for (const char* s : {"fill", "discharge", "probes"})
       if (const toml::node* n = root.get(s))
@@ -618,10 +565,7 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
 
   // [output]
   {
-    const ParamValues v = r.read(single("output"), section("output").fields, "output");
-    c.output.every = long(v.number("every"));
-    for (double id : v.lists.at("ids")) c.output.ids.push_back(std::uint64_t(id));
-    c.output.vtk_interval = v.number("vtk_interval");
+    const ParamValues v = r.read_into(c.output, single("output"), output_fields(), "output");
     if (c.output.vtk_interval > 0 && !c.silo.present)
       throw v.error("vtk_interval", "ParaView frames are written by silo runs only");
     if (const std::string& m = v.string("measured"); !m.empty()) {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "scenario/case.hpp"
+#include "io/config/case.hpp"
 
 namespace silodem::config {
 

@@ -182,5 +182,62 @@ TEST(Config, DocsMentionEveryLawAndSection) {
     EXPECT_NE(md.find(s), std::string::npos) << s;
 }
 
+// Issue 18, item 1: a key is bound to its member once; the member's initial value is the default.
+struct Demo {
+  double length = 0.1;  // m
+  int count = 3;
+  std::string name = "demo";
+  double marker = 0.0;  // outside the key's range: "not given"
+};
+
+TEST(Config, ABoundKeyTakesItsDefaultFromTheSpecAndShowsItInTheFileUnit) {
+  const std::vector<Bound<Demo>> b = {
+      bind(Field::number("length_mm", "", "mm", 1e-3).above(0), &Demo::length),
+      bind(Field::integer("count", "").at_least(1), &Demo::count),
+      bind(Field::text("name", "", {}), &Demo::name),
+      bind(Field::number("marker", "").above(0), &Demo::marker),
+  };
+  ASSERT_TRUE(b[0].field.default_number.has_value());
+  EXPECT_NEAR(*b[0].field.default_number, 100.0, 1e-9);  // 0.1 m in mm
+  EXPECT_EQ(b[1].field.default_number, 3.0);
+  EXPECT_EQ(b[2].field.default_string, "demo");
+  EXPECT_FALSE(b[2].field.required);                    // a string with a default may be left out
+  EXPECT_FALSE(b[3].field.default_number.has_value());  // 0 is not in (0, inf): shown as "-"
+
+  ParamValues v;  // as the loader gives it: SI values, with which keys were written
+  v.numbers = {{"length_mm", 0.25}, {"count", 3.0}, {"marker", 0.0}};
+  v.strings = {{"name", "demo"}};
+  v.given = {{"length_mm", true}, {"count", false}, {"name", false}, {"marker", false}};
+  Demo d;
+  d.count = 7;  // a key not given leaves the member as it is
+  assign(d, b, v);
+  EXPECT_EQ(d.length, 0.25);
+  EXPECT_EQ(d.count, 7);
+  EXPECT_EQ(d.name, "demo");
+}
+
+TEST(Config, AGivenKeyReachesItsMemberAndTheRestKeepTheSpecDefaults) {
+  std::ifstream in(std::string(SILODEM_SOURCE_DIR) + "/tests/data/small_silo.toml");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str() + "[probes]\nslab_thickness_mm = 5\nslab_times = [2.0, 0.5]\n";
+  const Case c = config::load_case_text(text, "case.toml");
+  EXPECT_DOUBLE_EQ(c.probes.slab_thickness, 0.005);                 // mm -> m
+  EXPECT_EQ(c.probes.slab_times, (std::vector<double>{0.5, 2.0}));  // sorted by the loader
+  const ProbeSpec d;
+  EXPECT_EQ(c.probes.every, d.every);
+  EXPECT_EQ(c.probes.profile_heights, d.profile_heights);
+  EXPECT_DOUBLE_EQ(c.discharge.bin, 0.1);
+  EXPECT_DOUBLE_EQ(c.discharge.sink_depth, 0.03);
+  EXPECT_EQ(c.discharge.target_fraction, DischargeSpec{}.target_fraction);
+  EXPECT_DOUBLE_EQ(c.silo.geometry.outlet_diameter, 0.04);
+  EXPECT_EQ(c.silo.geometry.valve_gap, SiloGeometry{}.valve_gap);
+  EXPECT_EQ(c.fill.mode, FillMode::Mass);
+  EXPECT_DOUBLE_EQ(c.coals[0].sauter_diameter, 0.005);  // not given: the coal's diameter
+  EXPECT_EQ(*c.coals[0].cohesion_force_override, 0.0);
+  EXPECT_EQ(c.time.threads, 2);
+  EXPECT_EQ(c.time.gravity.z, TimeSpec{}.gravity.z);
+}
+
 }  // namespace
 }  // namespace silodem

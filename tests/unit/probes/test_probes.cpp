@@ -26,9 +26,15 @@ std::unique_ptr<Simulation> empty_sim(double cohesion = 0.0) {
   return std::make_unique<Simulation>(test::model_of(l, {cohesion}), s);
 }
 
-std::unique_ptr<Probe> probe(const Case& c, const std::string& name) {
+// What a case tells the probes. The site defaults to the paper's silo (cylinder 468 mm wide).
+struct Given {
+  ProbeSpec probes;
+  ProbeSite site{0.234};
+};
+
+std::unique_ptr<Probe> probe(const Given& c, const std::string& name) {
   for (const auto& e : probe_registry())
-    if (e.name == name) return e.make(c);
+    if (e.name == name) return e.make(c.probes, c.site);
   ADD_FAILURE() << "no probe " << name;
   return nullptr;
 }
@@ -60,7 +66,7 @@ std::unique_ptr<Simulation> cubic_bed(int n, double* top) {
 TEST(Probes, BedAtRestHasZeroVelocityAndItsLevel) {
   double top = 0;
   auto sim = cubic_bed(5, &top);
-  Case c;
+  Given c;
   c.probes.profile_heights = {kR, kR + 2 * 2 * kR};  // the first and the third layer
   c.probes.profile_bin = 2 * kR;
   c.probes.slab_thickness = 2 * kR;  // the middle row of the lattice only
@@ -97,7 +103,7 @@ TEST(Probes, CohesiveChainIsFullyAdheredWithTheAnalyticMeanForce) {
   for (int i = 0; i < n; ++i)
     sim->particles().add({i * 2 * kR * (1 - 1e-4), 0, 0.1}, {}, {}, kR, kM, 0);
   sim->initialize();
-  Case c;
+  Given c;
   auto adh = probe(c, "adhesion");
   const auto a = sample(*adh, *sim, 0.0);
   EXPECT_EQ(a[0][1], double(n));
@@ -119,7 +125,7 @@ TEST(Probes, SeparatedParticlesAreNotAdhered) {
   sim->particles().add({0, 0, 0.1}, {}, {}, kR, kM, 0);
   sim->particles().add({2 * kR * 1.01, 0, 0.1}, {}, {}, kR, kM, 0);
   sim->initialize();
-  Case c;
+  Given c;
   auto adh = probe(c, "adhesion");
   EXPECT_EQ(sample(*adh, *sim, 0.0)[0][2], 0.0);
   auto coh = probe(c, "cohesion_force");
@@ -131,8 +137,8 @@ TEST(Probes, MovingParticleLandsInItsProfileBinWithItsVelocity) {
   const double x0 = 0.0437, h = 0.2, vz = -0.31;
   sim->particles().add({x0, 0.001, h + 0.002}, {0.05, 0, vz}, {}, kR, kM, 0);
   sim->initialize();
-  Case c;
-  c.silo.geometry.cylinder_diameter = 0.2;  // bins from x = -0.1 m
+  Given c;
+  c.site.silo_radius = 0.1;  // bins from x = -0.1 m
   c.probes.profile_bin = 0.01;
   c.probes.profile_heights = {0.1, 0.2, 0.3};
   c.probes.profile_from = 1.0;
@@ -161,7 +167,7 @@ TEST(Probes, SlabSnapshotsAtTheirTimesOnlyInsideTheSlab) {
   sim->particles().add({0.01, 0.004, 0.1}, {}, {}, kR, kM, 0);   // inside |y| <= 0.005
   sim->particles().add({0.02, -0.006, 0.1}, {}, {}, kR, kM, 0);  // outside
   sim->initialize();
-  Case c;
+  Given c;
   c.probes.slab_thickness = 0.01;
   c.probes.slab_times = {0.0, 1.0};
   auto slab = probe(c, "slab");
@@ -178,7 +184,7 @@ TEST(Probes, LevelIsEmptyWithNobodyOnTheAxis) {
   auto sim = empty_sim();
   sim->particles().add({0.1, 0, 0.1}, {}, {}, kR, kM, 0);
   sim->initialize();
-  Case c;
+  Given c;
   auto level = probe(c, "level");
   EXPECT_TRUE(std::isnan(sample(*level, *sim, 0.0)[0][1]));
 }
