@@ -227,7 +227,7 @@ int bench_from_checkpoint(const BenchOptions& o) {
   // --set changes the run's case from the checkpoint on (e.g. a speed-only key such as
   // simulation.reorder_every, or a what-if); the run directory itself is not touched.
   RunCheckpoint rc = open_run_checkpoint(o.from_dir, /*force=*/false, "--from");
-  if (rc.reader.next_is("FILP"))
+  if (rc.head.phase == RunHead::Phase::Fill)
     throw InputError({}, "--from",
                      fmt::format("'{}' stopped during its fill: finish it first (silodem run "
                                  "--resume {})",
@@ -241,11 +241,8 @@ int bench_from_checkpoint(const BenchOptions& o) {
   const CaseReport report = derive_case(rc.c, &model);
   std::size_t valve = 0;
   auto sim = build_silo_simulation(rc.c, report, std::move(model), &valve,
-                                   o.threads > 0 ? o.threads : rc.threads);
+                                   o.threads > 0 ? o.threads : rc.head.threads);
   Discharge dis(*sim, rc.c.silo.geometry, valve, rc.c.discharge);
-  double wall_before = 0.0;
-  FillReport fill;
-  read_fill_block(rc.reader, wall_before, fill);
   sim->load(rc.reader);
   dis.load(rc.reader);         // the probes' state follows; not needed here
   rc.reader = ByteReader({});  // the file's bytes go before the memory is measured

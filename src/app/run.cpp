@@ -42,20 +42,7 @@ std::string to_json(const toml::table& t) {
 }
 
 fs::path prepare_out(const RunOptions& o, const Case& c, const CaseReport& report) {
-  const fs::path out(o.out_dir);
-  if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
-    throw InputError({}, "--out",
-                     fmt::format("'{}' exists and is not empty; refusing to overwrite (choose a "
-                                 "new directory)",
-                                 o.out_dir));
-  fs::create_directories(out);
-  fs::copy_file(o.case_path, out / "case.toml", fs::copy_options::overwrite_existing);
-  write_text(out / "case_source.txt", fs::absolute(o.case_path).string());
-  std::string overrides;
-  for (const auto& s : o.overrides) overrides += s + "\n";
-  if (!overrides.empty()) write_text(out / "overrides.txt", overrides);
-  write_text(out / "check.json", case_report_json(c, report));
-  return out;
+  return RunDir::create(o.out_dir, o.case_path, o.overrides, case_report_json(c, report)).path();
 }
 
 namespace {

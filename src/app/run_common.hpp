@@ -10,6 +10,7 @@
 #include "app/commands.hpp"
 #include "core/bytes.hpp"
 #include "io/config/case.hpp"
+#include "io/run_dir.hpp"
 #include "scenario/layered_filling.hpp"
 #include "scenario/setup.hpp"
 
@@ -25,21 +26,19 @@ std::filesystem::path prepare_out(const RunOptions& o, const Case& c, const Case
 int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, ContactModel model);
 int resume_silo(const RunOptions& o);
 
-// A run directory's checkpoint, opened: the case as the directory holds it (case.toml,
-// overrides.txt, relative paths as from the original case file) and a reader past the header
-// (case hash, thread count), at the fill block. Refuses a directory without a checkpoint, or one
-// whose case changed since (unless `force`), with an InputError naming `option`.
+// A run directory's checkpoint, opened (io/run_dir.hpp): the case as the directory holds it
+// (case.toml, overrides.txt, relative paths as from the original case file), the checkpoint's
+// head and a reader at the components' bytes. Refuses a directory without a checkpoint, a damaged
+// or other-version one, or one whose case changed since (unless `force`), with an InputError
+// naming `option`.
 struct RunCheckpoint {
   std::string case_path;
   std::vector<std::string> overrides;
   std::string base_dir;  // where the original case file was: relative paths start there
-  ByteReader reader;
-  std::uint64_t hash;
-  int threads;
+  RunHead head;
+  ByteReader reader{{}};
   Case c;
 };
 RunCheckpoint open_run_checkpoint(const std::filesystem::path& dir, bool force, const char* option);
-// The fill block of a run checkpoint: the wall time before it and the fill's report.
-void read_fill_block(ByteReader& r, double& wall_before, FillReport& fill);
 
 }  // namespace silodem::app

@@ -19,6 +19,7 @@
 #include "io/checkpoint.hpp"
 #include "io/config/load.hpp"
 #include "io/csv.hpp"
+#include "io/run_dir.hpp"
 #include "io/run_metrics.hpp"
 #include "scenario/discharge.hpp"
 #include "scenario/layered_filling.hpp"
@@ -56,19 +57,6 @@ struct SignalGuard {
 };
 
 struct InterruptedFill {};
-
-// The case as the run directory holds it (case.toml + overrides.txt), to detect a changed case.
-std::uint64_t case_hash(const fs::path& out) {
-  return text_hash(read_text(out / "case.toml") + "\n--\n" + read_text(out / "overrides.txt"));
-}
-
-std::vector<std::string> overrides_in(const fs::path& out) {
-  std::vector<std::string> v;
-  std::istringstream in(read_text(out / "overrides.txt"));
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) v.push_back(line);
-  return v;
-}
 
 void write_fill_csv(const fs::path& path, const Case& c, const FillReport& f) {
   CsvWriter w(path.string(),
@@ -151,18 +139,17 @@ class SiloRun {
   // A new run into an empty DIR: fill, then discharge.
   int start(const fs::path& out) {
     out_ = out;
-    case_hash_ = case_hash(out_);  // the case as started (an edit during the run is a change)
+    case_hash_ = RunDir(out_).case_hash();  // the case as started (an edit during it is a change)
     write_summary_running();
     return fill_and_discharge(nullptr);
   }
 
   // Continue an interrupted or killed run from DIR/checkpoint.bin: its fill, or its discharge.
-  int resume(const fs::path& out, ByteReader& r, std::uint64_t hash) {
+  int resume(const fs::path& out, const RunHead& head, ByteReader& r) {
     out_ = out;
-    case_hash_ = hash;
-    if (r.next_is("FILP")) {
-      r.tag("FILP");
-      r.get(wall_before_);
+    case_hash_ = head.case_hash;
+    wall_before_ = head.wall;
+    if (head.phase == RunHead::Phase::Fill) {
       FillProgress from;
       from.load(r);
       sim_->load(r);
@@ -172,7 +159,7 @@ class SiloRun {
                  from.segment + 1, sim_->time(), sim_->particles().size(), sim_->step_count());
       return fill_and_discharge(&from);
     }
-    read_fill_block(r, wall_before_, fill_);
+    fill_ = head.fill;
     sim_->load(r);
     dis_->load(r);
     observers_ = std::make_unique<Observers>(c_, out_, dis_->t0(), r);
@@ -198,14 +185,10 @@ class SiloRun {
       const double dt_sim = c_.time.checkpoint_interval, dt_wall = c_.time.checkpoint_wall_interval;
       if (stop || (dt_sim > 0 && sim_->time() - sim_at_ck >= dt_sim) ||
           (dt_wall > 0 && wall() - wall_at_ck >= dt_wall)) {
-        ByteWriter w;
-        w.put(case_hash_);
-        w.put(std::int32_t(sim_->settings().threads));
-        w.tag("FILP");
-        w.put(wall());
-        fp.save(w);
-        sim_->save(w);
-        write_checkpoint((out_ / "checkpoint.bin").string(), w);
+        RunDir(out_).write_checkpoint(head(RunHead::Phase::Fill), [&](ByteWriter& w) {
+          fp.save(w);
+          sim_->save(w);
+        });
         sim_at_ck = sim_->time(), wall_at_ck = wall();
       }
       if (stop) throw InterruptedFill{};
@@ -247,20 +230,22 @@ class SiloRun {
     return discharge();
   }
 
+  RunHead head(RunHead::Phase phase) const {
+    RunHead h;
+    h.case_hash = case_hash_;
+    h.threads = sim_->settings().threads;
+    h.phase = phase;
+    h.wall = wall();
+    if (phase == RunHead::Phase::Discharge) h.fill = fill_;
+    return h;
+  }
+
   void checkpoint() {
-    ByteWriter w;
-    w.put(case_hash_);
-    w.put(std::int32_t(sim_->settings().threads));
-    w.tag("FILL");
-    w.put(wall());
-    w.put(fill_.particles), w.put(fill_.mass), w.put(fill_.settle_time);
-    w.put(fill_.max_boundary_offset);
-    w.put(std::uint64_t(fill_.warnings.size()));
-    for (const auto& s : fill_.warnings) w.put(s);
-    sim_->save(w);
-    dis_->save(w);
-    observers_->save(w);
-    write_checkpoint((out_ / "checkpoint.bin").string(), w);
+    RunDir(out_).write_checkpoint(head(RunHead::Phase::Discharge), [&](ByteWriter& w) {
+      sim_->save(w);
+      dis_->save(w);
+      observers_->save(w);
+    });
   }
 
   int discharge() {
@@ -347,7 +332,7 @@ class SiloRun {
     write_text(out_ / "summary.json", to_json(summary));
     // Complete: nothing to resume. After an error the last good checkpoint stays (resume it
     // with --force after changing what caused the error, e.g. a smaller time step).
-    if (error_.empty()) fs::remove(out_ / "checkpoint.bin");
+    if (error_.empty()) RunDir(out_).remove_checkpoint();
     if (!error_.empty()) {
       fmt::print(stderr, "simulation error: {}\n", error_);
       default_signals();
@@ -476,8 +461,8 @@ int run_silo(const RunOptions& o, const Case& c, const CaseReport& report, Conta
 }
 
 RunCheckpoint open_run_checkpoint(const fs::path& out, bool force, const char* option) {
-  const fs::path ck = out / "checkpoint.bin";
-  if (!fs::exists(ck)) {
+  const RunDir dir(out);
+  if (!dir.has_checkpoint()) {
     throw InputError({}, option,
                      run_state(out) == RunState::Finished  // summary.json read as JSON
                          ? fmt::format("'{}' is a complete run: nothing to resume", out.string())
@@ -487,17 +472,13 @@ RunCheckpoint open_run_checkpoint(const fs::path& out, bool force, const char* o
                                        out.string(), out.string()));
   }
   // A truncated, foreign or other-version file is bad input to the command: one line, exit 2.
-  auto read = [&] {
-    try {
-      return read_checkpoint(ck.string());
-    } catch (const std::runtime_error& e) {
-      throw InputError({}, option, e.what());
-    }
-  };
-  RunCheckpoint rc{{}, {}, {}, read(), 0, 0, {}};
-  rc.hash = rc.reader.get<std::uint64_t>();
-  rc.threads = rc.reader.get<std::int32_t>();
-  if (rc.hash != case_hash(out) && !force)
+  RunCheckpoint rc;
+  try {
+    rc.reader = dir.read_checkpoint(rc.head);
+  } catch (const std::runtime_error& e) {
+    throw InputError({}, option, e.what());
+  }
+  if (rc.head.case_hash != dir.case_hash() && !force)
     throw InputError({(out / "case.toml").string(), 0, 0}, option,
                      std::string_view(option) == "--resume"
                          ? "the case file (or overrides.txt) changed since the checkpoint; "
@@ -505,22 +486,13 @@ RunCheckpoint open_run_checkpoint(const fs::path& out, bool force, const char* o
                          : "the case file (or overrides.txt) changed since the checkpoint; the "
                            "state would not be the case's (restore the file and change the "
                            "case with --set instead)");
-  rc.case_path = (out / "case.toml").string();
-  rc.overrides = overrides_in(out);
+  rc.case_path = dir.case_file();
+  rc.overrides = dir.overrides();
   // Relative paths in the case (measured data) are relative to where the case file was.
-  rc.base_dir = fs::path(read_text(out / "case_source.txt")).parent_path().string();
+  rc.base_dir = dir.case_dir();
   rc.c = config::load_case_file(rc.case_path, rc.overrides, rc.base_dir);
   if (!rc.c.silo.present) throw InputError({}, option, "only silo runs are resumable");
   return rc;
-}
-
-void read_fill_block(ByteReader& r, double& wall_before, FillReport& fill) {
-  r.tag("FILL");
-  r.get(wall_before);
-  r.get(fill.particles), r.get(fill.mass), r.get(fill.settle_time);
-  r.get(fill.max_boundary_offset);
-  const auto nw = r.get<std::uint64_t>();
-  for (std::uint64_t k = 0; k < nw; ++k) fill.warnings.push_back(r.get<std::string>());
 }
 
 int resume_silo(const RunOptions& o) {
@@ -531,14 +503,14 @@ int resume_silo(const RunOptions& o) {
   opts.overrides = rc.overrides;
   ContactModel model;
   const CaseReport report = derive_case(rc.c, &model);
-  if (o.threads > 0 && o.threads != rc.threads)
+  if (o.threads > 0 && o.threads != rc.head.threads)
     fmt::print(stderr,
                "warning: resuming with {} threads, the run had {}: the result will not be bitwise "
                "equal to an uninterrupted run (summation order)\n",
-               o.threads, rc.threads);
-  SiloRun run(opts, rc.c, report, std::move(model), o.threads > 0 ? o.threads : rc.threads);
+               o.threads, rc.head.threads);
+  SiloRun run(opts, rc.c, report, std::move(model), o.threads > 0 ? o.threads : rc.head.threads);
   SignalGuard signals;
-  return run.resume(out, rc.reader, rc.hash);
+  return run.resume(out, rc.head, rc.reader);
 }
 
 }  // namespace silodem::app

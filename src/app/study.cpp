@@ -94,11 +94,9 @@ std::vector<std::string> metric_cells(const RunMetrics* m, RunState state) {
 }
 
 void check_run_matches(const RunJob& j, const char* what) {
-  if (!fs::exists(j.dir / "case.toml")) return;  // not started: nothing to mix up
-  std::string planned;
-  for (const auto& s : j.overrides) planned += s + "\n";
-  if (read_text(j.dir / "case.toml") != read_text(j.case_path) ||
-      read_text(j.dir / "overrides.txt") != planned)
+  const RunDir dir(j.dir);
+  if (!fs::exists(dir.case_file())) return;  // not started: nothing to mix up
+  if (read_text(dir.case_file()) != read_text(j.case_path) || dir.overrides() != j.overrides)
     throw InputError({}, what,
                      fmt::format("run directory '{}' holds another case or other --set values "
                                  "than this {} plans for it (its base case or fixed settings "

@@ -157,13 +157,24 @@ double kinetic_energy_per_particle(const Simulation& sim) {
   return ke / double(p.size());
 }
 
+void FillReport::save(ByteWriter& w) const {
+  w.put(segments), w.put(particles), w.put(mass), w.put(settle_time);
+  w.put(max_boundary_offset), w.put(std::uint64_t(warnings.size()));
+  for (const auto& m : warnings) w.put(m);
+}
+
+void FillReport::load(ByteReader& r) {
+  r.get(segments), r.get(particles), r.get(mass), r.get(settle_time);
+  r.get(max_boundary_offset);
+  warnings.resize(std::size_t(r.get<std::uint64_t>()));
+  for (auto& m : warnings) r.get(m);
+}
+
 void FillProgress::save(ByteWriter& w) const {
   w.tag("FPRG");
   w.put(std::uint64_t(segment)), w.put(std::int32_t(phase)), w.put(seg), w.put(start);
   w.put(settle_t0), w.put(min_time), w.put(std::int32_t(below));
-  w.put(report.segments), w.put(report.particles), w.put(report.mass), w.put(report.settle_time);
-  w.put(report.max_boundary_offset), w.put(std::uint64_t(report.warnings.size()));
-  for (const auto& m : report.warnings) w.put(m);
+  report.save(w);
   w.put(first_id), w.put(rng);
 }
 
@@ -173,10 +184,7 @@ void FillProgress::load(ByteReader& r) {
   phase = r.get<std::int32_t>();
   r.get(seg), r.get(start), r.get(settle_t0), r.get(min_time);
   below = r.get<std::int32_t>();
-  r.get(report.segments), r.get(report.particles), r.get(report.mass), r.get(report.settle_time);
-  r.get(report.max_boundary_offset);
-  report.warnings.resize(std::size_t(r.get<std::uint64_t>()));
-  for (auto& m : report.warnings) r.get(m);
+  report.load(r);
   r.get(first_id), r.get(rng);
 }
 

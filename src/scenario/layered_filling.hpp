@@ -35,6 +35,9 @@ struct FillReport {
   double settle_time = 0.0;          // total simulated settling time (s)
   double max_boundary_offset = 0.0;  // |settled - nominal| over internal boundaries (m)
   std::vector<std::string> warnings;
+
+  void save(ByteWriter& w) const;
+  void load(ByteReader& r);
 };
 
 using Progress = std::function<void(const std::string&)>;
