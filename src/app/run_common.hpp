@@ -28,9 +28,10 @@ int resume_silo(const RunOptions& o);
 
 // A run directory's checkpoint, opened (io/run_dir.hpp): the case as the directory holds it
 // (case.toml, overrides.txt, relative paths as from the original case file), the checkpoint's
-// head and a reader at the components' bytes. Refuses a directory without a checkpoint, a damaged
-// or other-version one, or one whose case changed since (unless `force`), with an InputError
-// naming `option`.
+// head and a reader at the components' bytes. Refuses a directory without a checkpoint, a file
+// that is truncated, foreign, of another version or whose head is damaged, or a case changed since
+// (unless `force`), with an InputError naming `option`. Damage in the components' bytes shows when
+// they are read.
 struct RunCheckpoint {
   std::string case_path;
   std::vector<std::string> overrides;

@@ -90,6 +90,13 @@ class ByteReader {
     return have == want;
   }
   bool done() const { return at_ == bytes_.size(); }
+  // A count of items that take at least `min_bytes` each: refused if the bytes left cannot hold
+  // them (a damaged count fails here instead of allocating without bound).
+  std::size_t get_count(std::size_t min_bytes) {
+    const auto n = get<std::uint64_t>();
+    if (min_bytes > 0 && n > (bytes_.size() - at_) / min_bytes) fail("count");
+    return std::size_t(n);
+  }
 
  private:
   void need(std::size_t n) const {

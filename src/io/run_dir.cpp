@@ -104,7 +104,7 @@ ByteReader RunDir::read_checkpoint(RunHead& head) const {
       r.get(head.wall);
       FillReport& f = head.fill;
       r.get(f.particles), r.get(f.mass), r.get(f.settle_time), r.get(f.max_boundary_offset);
-      f.warnings.resize(std::size_t(r.get<std::uint64_t>()));
+      f.warnings.resize(r.get_count(sizeof(std::uint64_t)));
       for (auto& m : f.warnings) r.get(m);
     }
   } catch (const std::exception& e) {

@@ -7,7 +7,9 @@
 // checkpoint.bin (io/checkpoint.hpp's header: magic, format version, length) holds a RunHead
 // (case hash, threads, then "FILP" and the wall time during the fill, or "FILD", the wall time and
 // the finished fill's report in the discharge; "FILL", the same without the segments, is read as
-// written before 2026-12-03), then the components' own bytes in a fixed order: during the fill
+// written by silodem before acf744d: a run resumed from it has no segments in its fill report, so
+// the summary's inventory calorific value is NaN for a fill without measured bulk densities),
+// then the components' own bytes in a fixed order: during the fill
 // FillProgress and the Simulation; in the discharge the Simulation, the Discharge and the
 // observers (probes, frames).
 #pragma once

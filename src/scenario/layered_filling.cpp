@@ -166,7 +166,7 @@ void FillReport::save(ByteWriter& w) const {
 void FillReport::load(ByteReader& r) {
   r.get(segments), r.get(particles), r.get(mass), r.get(settle_time);
   r.get(max_boundary_offset);
-  warnings.resize(std::size_t(r.get<std::uint64_t>()));
+  warnings.resize(r.get_count(sizeof(std::uint64_t)));  // each string: its length, then its bytes
   for (auto& m : warnings) r.get(m);
 }
 

@@ -104,4 +104,40 @@ TEST(RunDir, ADamagedHeadIsAnErrorNamingTheFile) {
   fs::remove_all(base);
 }
 
+// The discharge block as silodem wrote it before acf744d ("FILL": no segments), with `warnings`
+// as the count of the warning strings that follow (one is written).
+[[gnu::noinline]] ByteWriter legacy_head(std::uint64_t warnings) {
+  ByteWriter w;
+  w.put(std::uint64_t(77));  // case hash
+  w.put(std::int32_t(1));    // threads
+  w.tag("FILL");
+  w.put(3.5);                                // wall
+  w.put(long(10)), w.put(0.25), w.put(1.0);  // particles, mass, settle time
+  w.put(0.002);                              // max boundary offset
+  w.put(warnings), w.put(std::string("warn"));
+  w.put(std::int32_t(5));  // the components' bytes
+  return w;
+}
+
+TEST(RunDir, ACheckpointOfTheOlderFormatIsReadWithoutSegments) {
+  const fs::path base = fresh("legacy");
+  const RunDir d = RunDir::create(base / "run", case_file(base).string(), {}, "{}\n");
+  write_checkpoint((base / "run" / "checkpoint.bin").string(), legacy_head(1));
+  RunHead h;
+  ByteReader rest = d.read_checkpoint(h);
+  EXPECT_EQ(h.case_hash, 77u);
+  EXPECT_EQ(h.phase, RunHead::Phase::Discharge);
+  EXPECT_EQ(h.wall, 3.5);
+  EXPECT_EQ(h.fill.particles, 10);
+  EXPECT_EQ(h.fill.mass, 0.25);
+  EXPECT_EQ(h.fill.max_boundary_offset, 0.002);
+  EXPECT_TRUE(h.fill.segments.empty());
+  EXPECT_EQ(h.fill.warnings, std::vector<std::string>{"warn"});
+  EXPECT_EQ(rest.get<std::int32_t>(), 5);
+  // A damaged count of warnings is refused before anything is allocated for it.
+  write_checkpoint((base / "run" / "checkpoint.bin").string(), legacy_head(1ull << 40));
+  EXPECT_THROW(d.read_checkpoint(h), std::runtime_error);
+  fs::remove_all(base);
+}
+
 }  // namespace
