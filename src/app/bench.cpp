@@ -72,10 +72,21 @@ long current_rss_bytes() {
   return resident * long(sysconf(_SC_PAGESIZE));
 }
 
+// The pair loop's imbalance over the threads since the last reset: the slowest thread's time in
+// it over the mean (1 = balanced; the others wait at the barrier for the slowest).
+double pair_loop_imbalance(const Simulation& sim) {
+  const auto& s = sim.pair_loop_seconds();
+  const std::size_t nt = std::min(s.size(), std::size_t(std::max(1, sim.settings().threads)));
+  double mx = 0.0, sum = 0.0;
+  for (std::size_t k = 0; k < nt; ++k) mx = std::max(mx, s[k]), sum += s[k];
+  return sum > 0 ? mx / (sum / double(nt)) : 0.0;
+}
+
 struct Phase {
   long steps = 0;
   double seconds = 0.0;
   long rebuilds = 0;
+  double imbalance = 0.0;  // pair_loop_imbalance
   double rate(std::size_t n) const { return seconds > 0 ? double(n) * double(steps) / seconds : 0; }
 };
 
@@ -83,6 +94,7 @@ Phase time_steps(Simulation& sim, long steps, ProgressLine& progress, const char
   Phase ph;
   ph.steps = steps;
   const long builds0 = sim.neighbors().builds;
+  sim.reset_pair_loop_seconds();
   const auto t0 = std::chrono::steady_clock::now();
   const long chunk = std::max(1L, steps / 20);
   for (long done = 0; done < steps;) {
@@ -93,6 +105,7 @@ Phase time_steps(Simulation& sim, long steps, ProgressLine& progress, const char
   }
   ph.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ph.rebuilds = sim.neighbors().builds - builds0;
+  ph.imbalance = pair_loop_imbalance(sim);
   return ph;
 }
 
@@ -102,6 +115,7 @@ struct FlowPhase {
   long steps = 0;
   double particle_steps = 0.0, seconds = 0.0;
   long rebuilds = 0;
+  double imbalance = 0.0;  // pair_loop_imbalance
   DischargeEnd end = DischargeEnd::Interrupted;
   double rate() const { return seconds > 0 ? particle_steps / seconds : 0.0; }
 };
@@ -117,6 +131,7 @@ FlowPhase time_discharge(Simulation& sim, Discharge& dis, long steps, ProgressLi
   };
   const long builds0 = sim.neighbors().builds;
   std::string error;
+  sim.reset_pair_loop_seconds();
   const auto t0 = std::chrono::steady_clock::now();
   const long chunk = std::max(1L, steps / 20);
   while (ph.steps < steps && ph.end == DischargeEnd::Interrupted) {
@@ -127,6 +142,7 @@ FlowPhase time_discharge(Simulation& sim, Discharge& dis, long steps, ProgressLi
   }
   ph.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ph.rebuilds = sim.neighbors().builds - builds0;
+  ph.imbalance = pair_loop_imbalance(sim);
   if (ph.end == DischargeEnd::Error)
     throw SimulationError(fmt::format("after {} steps: {}", ph.steps, error));
   return ph;
@@ -280,6 +296,7 @@ int bench_from_checkpoint(const BenchOptions& o) {
                 {"wall_s", seconds},
                 {"wall_s_per_simulated_s", simulated > 0 ? seconds / simulated : 0.0},
                 {"neighbor_rebuilds", int64_t(rebuilds)},
+                {"pair_loop_imbalance", ph.imbalance},
                 {"steps_per_rebuild", rebuilds > 0 ? double(done) / double(rebuilds) : 0.0},
                 {"list_pairs_per_particle",
                  double(sim->neighbors().partner.size()) / double(std::max<std::size_t>(n1, 1))},
@@ -493,6 +510,7 @@ int bench_command(const BenchOptions& o) {
                 {"discharge_particle_steps_per_s", flowing.rate(n)},
                 {"neighbor_rebuilds", int64_t(settled.rebuilds + flowing.rebuilds)},
                 {"settled_rebuilds", int64_t(settled.rebuilds)},
+                {"pair_loop_imbalance", settled.imbalance},
                 {"discharge_rebuilds", int64_t(flowing.rebuilds)},
                 {"contacts_per_particle", double(contacts) / double(std::max<std::size_t>(n, 1))},
                 {"list_pairs_per_particle", list_pairs},
@@ -510,6 +528,7 @@ int bench_command(const BenchOptions& o) {
     t.insert("flowing_steps", int64_t(flow.steps));
     t.insert("flowing_particle_steps_per_s", flow.rate());
     t.insert("flowing_neighbor_rebuilds", int64_t(flow.rebuilds));
+    t.insert("flowing_pair_loop_imbalance", flow.imbalance);
     t.insert("flowing_cached", flow_cached);
     t.insert("flowing_cache", flow_cache.string());
   }

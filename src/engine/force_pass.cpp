@@ -2,6 +2,7 @@
 // The force pass of Simulation: pair contacts through the lanes, wall contacts, and the fixed-order
 // reduction of the per-thread buffers that also finishes the velocity-Verlet step.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #ifdef _OPENMP
@@ -21,6 +22,7 @@ namespace silodem {
 // kernels and the same order of the sums as one contact at a time, vectorised.
 template <class K>
 void Simulation::pair_forces(int tid, double guard) {
+  const auto t_start = std::chrono::steady_clock::now();
   constexpr int H = HistoryOf<K>::size;  // = list_.layout().size (the same laws)
   const std::size_t n = p_.size();
   const double dt = s_.dt;
@@ -61,7 +63,8 @@ void Simulation::pair_forces(int tid, double guard) {
   const PeriodicBox& box = s_.periodic;
   const bool pbc = box.any();
   constexpr std::size_t PF = 16;
-#pragma omp for schedule(static)
+  // nowait: the barrier is below, after this thread's time in the loop is taken.
+#pragma omp for schedule(static) nowait
   for (std::size_t i = 0; i < n; ++i) {
     lo = std::min(lo, i);
     hi = std::max(hi, i + 1);
@@ -130,6 +133,9 @@ void Simulation::pair_forces(int tid, double guard) {
   // Read after the barriers that end this loop and the wall loop. The wall loop writes only its
   // own i, and two static loops over the same n give each thread the same i (OpenMP 5.0, 2.9.2).
   written_[std::size_t(tid)] = {lo, hi};
+  pair_busy_[std::size_t(tid)] +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+#pragma omp barrier
 }
 
 // Walls: each particle belongs to one thread, which writes into its own buffers too.
@@ -176,6 +182,7 @@ void Simulation::compute_forces(bool finish_step) {
   wall_f_buf_.resize(std::size_t(nt));
   for (auto& b : wall_f_buf_) b.resize(walls_.size());
   flags_.assign(std::size_t(nt), OverlapFlag{});
+  if (pair_busy_.size() < std::size_t(nt)) pair_busy_.resize(std::size_t(nt), 0.0);
   if (windows_.size() != std::size_t(nt)) {
     const int nm = model_.materials();
     windows_.assign(std::size_t(nt), PairWindow{});

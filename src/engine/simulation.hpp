@@ -100,6 +100,12 @@ class Simulation {
   void save(ByteWriter& w) const;
   void load(ByteReader& r);
 
+  // Per thread: wall-clock seconds spent in its share of the pair loop (the half list split by
+  // particle index) since the last reset, without the wait at the barrier that ends the loop.
+  // max / mean over the threads is the loop's imbalance (bench's `pair_loop_imbalance`).
+  const std::vector<double>& pair_loop_seconds() const { return pair_busy_; }
+  void reset_pair_loop_seconds() { pair_busy_.assign(pair_busy_.size(), 0.0); }
+
   // Per-particle contact counts and cohesive forces of the current state (see ContactTally).
   ContactTally contact_tally() const;
   // Kinetic, rotational, gravitational (relative to z = 0 along -gravity) and spring energy.
@@ -144,6 +150,7 @@ class Simulation {
     double overlap = 0.0;
   };
   std::vector<OverlapFlag> flags_;  // per thread: the first contact over the overlap guard
+  std::vector<double> pair_busy_;   // per thread: seconds in the pair loop (pair_loop_seconds)
   double time_ = 0.0;
   long steps_ = 0;
   bool initialized_ = false;

@@ -93,6 +93,8 @@ assert 0.3 <= a["flowing_time_s"] < 0.3 + 1e-3, a["flowing_time_s"]
 assert 0 < a["flowing_particles"] < a["particles"], (a["flowing_particles"], a["particles"])
 assert a["flowing_particle_steps_per_s"] > 0 and a["flowing_steps"] == 20
 assert a["flowing_neighbor_rebuilds"] >= 0
+# One thread: the slowest thread's time in the pair loop is the mean (0 if nothing was timed).
+assert a["flowing_pair_loop_imbalance"] == 1.0 and a["pair_loop_imbalance"] == 1.0, a
 PY
 # A time after the silo has emptied is refused with the reason.
 "$bin" bench "$case_file" --threads 1 --steps 5 --cache "$work/cache" --flowing 50 \
