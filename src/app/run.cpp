@@ -24,17 +24,6 @@
 namespace fs = std::filesystem;
 
 namespace silodem::app {
-void write_text(const fs::path& path, const std::string& text) {
-  write_atomically(path.string(), {text}, false);
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string to_json(const toml::table& t) {
   std::ostringstream os;
   os << toml::json_formatter{t} << "\n";

@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "core/bytes.hpp"
+#include "io/atomic_file.hpp"
 #include "io/config/case.hpp"
 #include "io/run_dir.hpp"
 #include "scenario/layered_filling.hpp"
@@ -17,8 +18,6 @@
 namespace silodem::app {
 
 // Writes "<path>.partial" and renames it: a reader never sees a half-written file.
-void write_text(const std::filesystem::path& path, const std::string& text);
-std::string read_text(const std::filesystem::path& path);  // the whole file ("" if missing)
 std::string to_json(const toml::table& t);
 // Creates DIR (refusing a non-empty one) with a copy of the case and its derived numbers.
 std::filesystem::path prepare_out(const RunOptions& o, const Case& c, const CaseReport& report);

@@ -7,6 +7,8 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace silodem {
@@ -44,6 +46,17 @@ void write_atomically(const std::string& path, const std::vector<std::string_vie
     ::fsync(dfd);
     ::close(dfd);
   }
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text) {
+  write_atomically(path.string(), {text}, false);
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
 }
 
 }  // namespace silodem

@@ -2,7 +2,6 @@
 #include "io/run_dir.hpp"
 
 #include <fmt/format.h>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -13,20 +12,6 @@
 namespace fs = std::filesystem;
 
 namespace silodem {
-namespace {
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  write_atomically(path.string(), {text}, false);
-}
-
-}  // namespace
 
 RunDir RunDir::create(const fs::path& dir, const std::string& case_path,
                       const std::vector<std::string>& overrides, const std::string& check_json,
