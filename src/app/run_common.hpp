@@ -17,7 +17,7 @@
 
 namespace silodem::app {
 
-// Writes "<path>.partial" and renames it: a reader never sees a half-written file.
+// The table as JSON text, ending in a newline.
 std::string to_json(const toml::table& t);
 // Creates DIR (refusing a non-empty one) with a copy of the case and its derived numbers.
 std::filesystem::path prepare_out(const RunOptions& o, const Case& c, const CaseReport& report);

@@ -21,7 +21,7 @@ namespace silodem {
 // The pairs in range go through lane arrays, kLanes at a time (engine/pair_batch.hpp): the same
 // kernels and the same order of the sums as one contact at a time, vectorised.
 template <class K>
-void Simulation::pair_forces(int tid, double guard) {
+void Simulation::pair_forces(int tid, int team, double guard) {
   const auto t_start = std::chrono::steady_clock::now();
   constexpr int H = HistoryOf<K>::size;  // = list_.layout().size (the same laws)
   const std::size_t n = p_.size();
@@ -133,8 +133,11 @@ void Simulation::pair_forces(int tid, double guard) {
   // Read after the barriers that end this loop and the wall loop. The wall loop writes only its
   // own i, and two static loops over the same n give each thread the same i (OpenMP 5.0, 2.9.2).
   written_[std::size_t(tid)] = {lo, hi};
-  pair_busy_[std::size_t(tid)] +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+  // Only steps on the whole team count: a bed below 512 particles runs on one thread, and its
+  // steps would otherwise show as thread 0's imbalance.
+  if (team == s_.threads)
+    pair_busy_[std::size_t(tid)] +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 #pragma omp barrier
 }
 
@@ -213,7 +216,7 @@ void Simulation::compute_forces(bool finish_step) {
     if (fb.size() != n) fb.assign(n, Vec3{});
     if (tb.size() != n) tb.assign(n, Vec3{});
     // Pair contacts (half list), then walls; each thread accumulates into its own buffers.
-    with_kernels(model_.pair(0, 0), [&](auto k) { pair_forces<decltype(k)>(tid, guard); });
+    with_kernels(model_.pair(0, 0), [&](auto k) { pair_forces<decltype(k)>(tid, nt, guard); });
     with_kernels(model_.wall(0), [&](auto k) { wall_forces<decltype(k)>(tid, guard); });
     // Reduce: gravity + external force + the per-thread buffers in fixed order.
 #pragma omp for schedule(static)

@@ -101,7 +101,8 @@ class Simulation {
   void load(ByteReader& r);
 
   // Per thread: wall-clock seconds spent in its share of the pair loop (the half list split by
-  // particle index) since the last reset, without the wait at the barrier that ends the loop.
+  // particle index) since the last reset, without the wait at the barrier that ends the loop;
+  // only force passes on all `threads` threads count (a small bed runs on one).
   // max / mean over the threads is the loop's imbalance (bench's `pair_loop_imbalance`).
   const std::vector<double>& pair_loop_seconds() const { return pair_busy_; }
   void reset_pair_loop_seconds() { pair_busy_.assign(pair_busy_.size(), 0.0); }
@@ -118,7 +119,7 @@ class Simulation {
   // The two halves of compute_forces' parallel region, compiled per law combination
   // (model/contact/dispatch.hpp); orphaned `omp for` loops.
   template <class K>
-  void pair_forces(int tid, double guard);
+  void pair_forces(int tid, int team, double guard);  // team: the threads of this pass
   template <class K>
   void wall_forces(int tid, double guard);
   void update_neighbors(bool moved);  // moved: some particle moved over skin/2
