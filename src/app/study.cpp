@@ -93,10 +93,26 @@ std::vector<std::string> metric_cells(const RunMetrics* m, RunState state) {
           num(m->wall_time_s)};
 }
 
+namespace {
+
+// Two case texts hold the same case when they parse to the same TOML values: a comment or layout
+// edit of a base case does not make the runs already made from it another case's.
+bool same_case(const std::string& a, const std::string& b) {
+  if (a == b) return true;
+  try {
+    return toml::parse(a) == toml::parse(b);
+  } catch (const toml::parse_error&) {
+    return false;
+  }
+}
+
+}  // namespace
+
 void check_run_matches(const RunJob& j, const char* what) {
   const RunDir dir(j.dir);
   if (!fs::exists(dir.case_file())) return;  // not started: nothing to mix up
-  if (read_text(dir.case_file()) != read_text(j.case_path) || dir.overrides() != j.overrides)
+  if (!same_case(read_text(dir.case_file()), read_text(j.case_path)) ||
+      dir.overrides() != j.overrides)
     throw InputError({}, what,
                      fmt::format("run directory '{}' holds another case or other --set values "
                                  "than this {} plans for it (its base case or fixed settings "

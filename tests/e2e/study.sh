@@ -150,6 +150,18 @@ PY
 # Another start finds every run finished and starts none.
 "$bin" study "$work/study.toml" --out "$work/s" --threads 1 > "$work/s5.log" 2>&1 || bad "fifth start exited $?"
 grep -q "6 runs finished" "$work/s5.log" || bad "fifth start: $(tail -2 "$work/s5.log")"
+# The base case with a comment added is the same case: the finished study goes on. A changed value
+# in it is refused.
+{ cat "$src/tests/data/small_silo.toml"; echo "# a comment added after the runs"; } > "$work/base.toml"
+sed "s|^base = .*|base = \"$work/base.toml\"|" "$work/study.toml" > "$work/study-base.toml"
+"$bin" study "$work/study-base.toml" --out "$work/s" --threads 1 > "$work/s6.log" 2>&1 ||
+  bad "a base case with a comment added was refused: $(tail -2 "$work/s6.log")"
+grep -q "6 runs finished" "$work/s6.log" || bad "comment added: $(tail -2 "$work/s6.log")"
+sed -i 's/restitution = 0.3 }/restitution = 0.35 }/' "$work/base.toml"
+cmp -s "$work/base.toml" <({ cat "$src/tests/data/small_silo.toml"; echo "# a comment added after the runs"; }) &&
+  bad "the test did not change a value in the base case"
+"$bin" study "$work/study-base.toml" --out "$work/s" --threads 1 > /dev/null 2> "$work/s6.err"
+[ $? -eq 2 ] && grep -q "another case" "$work/s6.err" || bad "a changed base case was not refused: $(cat "$work/s6.err")"
 # A changed fixed setting is refused: it would mix two cases in one study.
 sed -i 's/discharge.max_time=4/discharge.max_time=5/' "$work/study.toml"
 "$bin" study "$work/study.toml" --out "$work/s" --threads 1 > /dev/null 2> "$work/s4.err"
