@@ -120,6 +120,15 @@ def main(argv):
               excess["f2"] / excess["f1"] / (FORCES_N["f2"] / FORCES_N["f1"]), 0.9, 1.1,
               "supplementary: the strength above the dry spheres' grows with the force, "
               "proportional within 10%")
+    # Reported, not checked: the failure stresses themselves of the larger box and of 10x k_n
+    # against the base cell's, stress by stress (what the fitted C and phi summarise).
+    for c in ("box", "stiff"):
+        pts = failure_points(out, c)
+        common = sorted(set(base_pts) & set(pts))
+        if common:
+            print(f"failure tau of {c} over base at sigma = "
+                  + ", ".join(f"{s:g}" for s in common) + " kPa: "
+                  + ", ".join(f"{pts[s] / base_pts[s]:.3f}" for s in common) + " (reported, not checked)")
     print(f"steady tau/sigma against the one published 3D DEM value "
           f"({LITERATURE_STEADY_RATIO}, Latham et al. 2005): base "
           f"{base_ratio / LITERATURE_STEADY_RATIO:.3f}, box "
