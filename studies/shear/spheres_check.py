@@ -128,7 +128,8 @@ def main(argv):
         if common:
             print(f"failure tau of {c} over base at sigma = "
                   + ", ".join(f"{s:g}" for s in common) + " kPa: "
-                  + ", ".join(f"{pts[s] / base_pts[s]:.3f}" for s in common) + " (reported, not checked)")
+                  + ", ".join(f"{pts[s] / base_pts[s]:.3f}" for s in common)
+                  + " (reported, not checked)")
     print(f"steady tau/sigma against the one published 3D DEM value "
           f"({LITERATURE_STEADY_RATIO}, Latham et al. 2005): base "
           f"{base_ratio / LITERATURE_STEADY_RATIO:.3f}, box "
