@@ -30,6 +30,7 @@ Simulation::Simulation(ContactModel model, SimulationSettings settings)
   omp_set_dynamic(0);  // exactly s_.threads threads: the force summation order depends on it
 #endif
   list_.threads = s_.threads;
+  list_.skin_floor = s_.skin_floor;
   list_.set_periodic(s_.periodic);
   // One [contact.particle_particle] and one [contact.particle_wall] section: every coal pair has
   // the laws (and so the history layout) of pair (0, 0), every wall contact those of wall 0.

@@ -25,7 +25,10 @@ struct SimulationSettings {
   double dt = 1e-5;               // s
   Vec3 gravity{0.0, 0.0, -9.81};  // m/s^2
   double skin = 1e-3;             // m, Verlet skin
-  int threads = 0;                // 0 = OpenMP default
+  // Per-particle skin (speed only): the smallest allowance a slow particle gets at a list build,
+  // as a fraction of skin / 2; 1 = every particle skin / 2 (VerletList::skin_floor).
+  double skin_floor = 1.0;
+  int threads = 0;  // 0 = OpenMP default
   // Guards: the run stops with a diagnostic when a particle is faster than max_speed (m/s; 0 =
   // no bound) or a contact overlaps by more than max_overlap times the smaller radius (0 = off).
   double max_speed = 0.0;

@@ -26,6 +26,15 @@ const std::vector<Bound<TimeSpec>>& time_fields() {
                .above(0)
                .at_most(5),
            &S::skin),
+      bind(F::number("skin_floor",
+                     "per-particle skin (speed only, like reorder_every: the same contacts and "
+                     "fewer listed pairs out of range; the rebuilds, and with them the Morton "
+                     "reorders, come at other steps): at each neighbour-list build a particle may "
+                     "move skin/2 x min(1, max(skin_floor, 2 |v| / v_max)) before the next; 1 = "
+                     "skin/2 for every particle")
+               .above(0)
+               .at_most(1),
+           &S::skin_floor),
       bind(F::integer("reorder_every",
                       "sort the particles along a Morton curve before every N-th neighbour-list "
                       "build, so that neighbours are close in memory (speed only: changes the "

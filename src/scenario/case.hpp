@@ -27,6 +27,7 @@ struct TimeSpec {
   double steps_per_collision = 50;  // N in dt = t_col / N (MFIX's DTSOLID_FACTOR default)
   Vec3 gravity{0.0, 0.0, -9.81};    // m/s^2
   double skin = 0.25;               // Verlet skin / smallest CG diameter
+  double skin_floor = 1.0;          // per-particle skin: smallest allowance / (skin / 2); 1 = off
   int reorder_every = 10;           // Morton reorder every N list builds (0 = never)
   int threads = 0;                  // 0 = all cores
   std::uint64_t seed = 1;

@@ -152,6 +152,7 @@ SimulationSettings settings_of(const ScenarioCase& c, const CaseReport& report, 
   s.dt = report.time_step;
   s.gravity = c.time.gravity;
   s.skin = c.time.skin * d_min;
+  s.skin_floor = c.time.skin_floor;
   s.reorder_every = c.time.reorder_every;
   s.threads = threads_override > 0 ? threads_override : c.time.threads;
   s.max_overlap = c.time.max_overlap;

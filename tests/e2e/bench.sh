@@ -84,7 +84,7 @@ import json, os, sys
 w = sys.argv[1]
 a, b = (json.load(open(os.path.join(w, f))) for f in ("flow1.json", "flow2.json"))
 for key in ["flowing_particle_steps_per_s", "flowing_particles", "flowing_neighbor_rebuilds",
-            "flowing_time_s", "flowing_cached"]:
+            "flowing_list_pairs_per_particle", "flowing_time_s", "flowing_cached"]:
     assert key in a, f"bench --flowing: missing {key}"
 assert a["flowing_cached"] is False and b["flowing_cached"] is True, (a, b)
 assert a["flowing_cache"] == b["flowing_cache"] and os.path.exists(a["flowing_cache"])
@@ -95,6 +95,21 @@ assert a["flowing_particle_steps_per_s"] > 0 and a["flowing_steps"] == 20
 assert a["flowing_neighbor_rebuilds"] >= 0
 # One thread: the slowest thread's time in the pair loop is the mean (0 if nothing was timed).
 assert a["flowing_pair_loop_imbalance"] == 1.0 and a["pair_loop_imbalance"] == 1.0, a
+PY
+# The per-particle skin (simulation.skin_floor, speed only) keeps the cached beds and lists
+# fewer pairs in the flowing bed once the list has been rebuilt (a rebuild every 50-60 steps).
+for f in 1 0.25; do
+  "$bin" bench "$case_file" --threads 1 --steps 200 --json --cache "$work/cache" --flowing 0.3 \
+    --set simulation.skin_floor=$f > "$work/floor$f.json" || bad "bench --flowing, skin_floor $f: exit $?"
+done
+python3 - "$work" <<'PY' || fail=1
+import json, os, sys
+w = sys.argv[1]
+a, b = (json.load(open(os.path.join(w, f))) for f in ("floor1.json", "floor0.25.json"))
+assert a["flowing_cached"] and b["flowing_cached"] and b["fill_cached"], (a, b)
+assert a["flowing_neighbor_rebuilds"] >= 1, a
+pa, pb = a["flowing_list_pairs_per_particle"], b["flowing_list_pairs_per_particle"]
+assert 0 < pb < 0.95 * pa, (pa, pb)
 PY
 # A time after the silo has emptied is refused with the reason.
 "$bin" bench "$case_file" --threads 1 --steps 5 --cache "$work/cache" --flowing 50 \

@@ -124,6 +124,20 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
           box_.len[a], "xyz"[a], cut_max));
   grid_.build(p.x, cut_max, 8 * n + 64, box_);
 
+  // The allowances (skin_floor in the header). a_i + a_j is exactly `skin` when both are skin / 2,
+  // so a floor of 1 lists what the fixed skin always listed.
+  const double half = 0.5 * skin;
+  std::vector<double> allow;
+  if (skin_floor < 1.0) {
+    double v2_max = 0.0;
+    for (const Vec3& v : p.v) v2_max = std::max(v2_max, norm2(v));
+    const double inv_v_max = v2_max > 0.0 ? 1.0 / std::sqrt(v2_max) : 0.0;
+    allow.resize(n);
+    for (std::size_t i = 0; i < n; ++i)
+      allow[i] = half * std::min(1.0, std::max(skin_floor, 2.0 * norm(p.v[i]) * inv_v_max));
+  }
+  const bool uniform = allow.empty();
+
   // One pass over the grid: each thread lists the partners of its share of i, each i's sorted
   // (cell order is arbitrary; index order is canonical), into its own buffer; the buffers then
   // concatenate into the CSR list in thread order. The list depends only on the particle order,
@@ -147,7 +161,8 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
       const double ri = p.radius[i];
       grid_.for_each_near(xi, [&](int j) {
         if (j <= int(i)) return;
-        const double cut = (ri + p.radius[j]) * (1.0 + reach_over_d) + skin;
+        const double cut = (ri + p.radius[j]) * (1.0 + reach_over_d) +
+                           (uniform ? skin : allow[i] + allow[std::size_t(j)]);
         const Vec3 d = xi - p.x[j];
         if (norm2(box_.any() ? box_.image(d) : d) < cut * cut) near.push_back(j);
       });
@@ -193,6 +208,9 @@ void VerletList::build(const ParticleStore& p, const WallList& walls, double ski
   check_ids_ = true;
   ids_hash_ = ids_hash(p, n);
   x_at_build_ = p.x;
+  allow2_all_ = 0.25 * skin * skin;
+  allow2_.resize(allow.size());
+  for (std::size_t i = 0; i < allow.size(); ++i) allow2_[i] = allow[i] * allow[i];
   ++builds;
 }
 
@@ -261,6 +279,7 @@ bool VerletList::remove(const ParticleStore& p, const std::vector<int>& to) {
         ++ww;
       }
       x_at_build_[row] = x_at_build_[i];
+      if (!allow2_.empty()) allow2_[row] = allow2_[i];
       ++row;
       offset[row] = int(w);
       wall_offset[row] = int(ww);
@@ -268,6 +287,7 @@ bool VerletList::remove(const ParticleStore& p, const std::vector<int>& to) {
     e_begin = e_end, we_begin = we_end;
   }
   offset.resize(n_new + 1), wall_offset.resize(n_new + 1), x_at_build_.resize(n_new);
+  if (!allow2_.empty()) allow2_.resize(n_new);
   partner.resize(w), wall.resize(ww);
   hist.resize(w * std::size_t(pair_layout.size)),
       wall_hist.resize(ww * std::size_t(wall_layout.size));
@@ -357,15 +377,18 @@ void from_legacy(const std::vector<LegacyState>& in, const StateLayout& l,
 // particles, renumber, build).
 void VerletList::save(ByteWriter& w) const {
   if (stashed_) throw std::logic_error("VerletList::save between stash_history and build");
-  w.tag("LST2");
+  // LST3 adds the per-particle allowances; a list with the fixed skin writes LST2 as before.
+  w.tag(allow2_.empty() ? "LST2" : "LST3");
   w.put(offset), w.put(partner);
   put_history(w, pair_layout, hist);
   w.put(wall_offset), w.put(wall);
   put_history(w, wall_layout, wall_hist);
   w.put(builds), w.put(skin), w.put(x_at_build_);
+  if (!allow2_.empty()) w.put(allow2_);
 }
 
 void VerletList::load(ByteReader& r) {
+  allow2_.clear();
   if (r.next_is("LIST")) {
     std::vector<LegacyState> pairs_in, walls_in;
     r.tag("LIST");
@@ -382,13 +405,20 @@ void VerletList::load(ByteReader& r) {
     if (stashed || !pairs.empty() || !walls.empty())
       throw std::runtime_error("checkpoint: the neighbour list holds a stashed contact history");
   } else {
-    r.tag("LST2");
+    const bool own = r.next_is("LST3");
+    r.tag(own ? "LST3" : "LST2");
     r.get(offset), r.get(partner);
     get_history(r, pair_layout, partner.size(), hist);
     r.get(wall_offset), r.get(wall);
     get_history(r, wall_layout, wall.size(), wall_hist);
     r.get(builds), r.get(skin), r.get(x_at_build_);
+    if (own) {
+      r.get(allow2_);
+      if (allow2_.size() != x_at_build_.size())
+        throw std::runtime_error("checkpoint: the skin allowances do not match the particles");
+    }
   }
+  allow2_all_ = 0.25 * skin * skin;
   stashed_ = false;
   check_ids_ = false;  // the ids are not in the list's part of the file: trust the checkpoint
 }

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Verlet neighbour list with a skin, and the contact history stored beside it (no hashing in the
 // force loop). Pairs are a half list (j > i) in CSR form; particle-wall candidates likewise.
-// Rebuilt only when some particle has moved more than skin/2 since the last build, or when the
-// particle set or the walls changed. History is carried over by particle index: a rebuild merges
-// the old list's nonzero states into the new one (both are sorted by (i, j)); when particles are
-// removed or reordered, the caller stashes the history first and renumbers it after, so it
-// survives both.
+// Rebuilt only when some particle has moved more than skin/2 (or its own allowance, with a skin
+// floor below 1) since the last build, or when the particle set or the walls changed. History is
+// carried over by particle index: a rebuild merges the old list's nonzero states into the new one
+// (both are sorted by (i, j)); when particles are removed or reordered, the caller stashes the
+// history first and renumbers it after, so it survives both.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -28,7 +29,12 @@ class VerletList {
   bool built_for(std::size_t n) const { return x_at_build_.size() == n; }
   bool moved_far(std::size_t i, const Vec3& x) const {
     const Vec3 d = x - x_at_build_[i];
-    return norm2(box_.any() ? box_.image(d) : d) > 0.25 * skin * skin;  // more than skin / 2
+    // More than the particle's allowance: skin / 2, or its own with a skin floor below 1.
+    return norm2(box_.any() ? box_.image(d) : d) > (allow2_.empty() ? allow2_all_ : allow2_[i]);
+  }
+  // The allowance of particle i (how far it may move before a rebuild), as of the last build.
+  double allowance(std::size_t i) const {
+    return allow2_.empty() ? 0.5 * skin : std::sqrt(allow2_[i]);
   }
   // Periodic boundaries (before the first build): pairs are found through the nearest image.
   // build() throws SimulationError if a period is shorter than twice the longest cut-off, where
@@ -84,6 +90,13 @@ class VerletList {
   long builds = 0;
   double skin = 0.0;
   int threads = 1;  // OpenMP threads for building and checking
+  // Per-particle skin (speed only, set before a build; SimulationSettings::skin_floor): 1 gives
+  // every particle the allowance skin / 2 (the fixed skin). Below 1, a build gives particle i
+  // skin / 2 x min(1, max(skin_floor, 2 |v_i| / v_max)) and lists a pair within
+  // (r_i + r_j)(1 + reach) + a_i + a_j: the list stays valid while each particle is within its own
+  // allowance, and slow particles list fewer pairs out of range. Wall candidates keep the full
+  // skin.
+  double skin_floor = 1.0;
 
  private:
   struct Saved {
@@ -105,6 +118,10 @@ class VerletList {
   std::uint64_t ids_hash_ = 0;  // of the particle ids at the build, in index order
   bool check_ids_ = false;      // ids_hash_ is known (false before a build and after load())
   std::vector<Vec3> x_at_build_;
+  // Squared allowances of the last build: one per particle (skin floor below 1), or, when empty,
+  // allow2_all_ = (skin / 2)^2 for every particle.
+  std::vector<double> allow2_;
+  double allow2_all_ = 0.0;
   CellGrid grid_;
   PeriodicBox box_;
 };
