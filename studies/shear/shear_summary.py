@@ -3,7 +3,10 @@
 
 usage: shear_summary.py DIR [DIR ...]   prints, per coal of each DIR/shear_test.json: C, phi, the
 steady tau/sigma of the first pre-shear (mean of the series beyond a strain of 0.25), f_c,
-sigma_1, ffc, bulk density and wall time, as CSV on stdout.
+sigma_1, ffc, bulk density and wall time, as CSV on stdout; and, for the paper's two coals, each
+failure shear stress over the measured yield locus C + sigma tan(phi) at the same normal stress
+(Table 1 of the paper, PHYSICS.md: Longwanggou 0.67 kPa, 33.4 deg; Indonesian 0.68 kPa, 37.2 deg),
+as its min, mean and max: a check of the tested points that does not extrapolate to sigma = 0.
 """
 import csv
 import json
@@ -25,11 +28,23 @@ def steady_ratio(series_path, from_strain=0.25):
     return (sum(taus) / len(taus)) / (sum(sigmas) / len(sigmas))
 
 
+MEASURED_LOCUS = {"Longwanggou": (0.67, 33.4), "Indonesian": (0.68, 37.2)}  # kPa, deg (Table 1)
+
+
+def locus_ratios(coal, yield_locus):
+    """Failure tau over the measured locus at each tested sigma ([] for a coal not in Table 1)."""
+    if coal not in MEASURED_LOCUS:
+        return []
+    c, phi = MEASURED_LOCUS[coal]
+    return [tau / (c + sigma * math.tan(math.radians(phi))) for sigma, tau in yield_locus]
+
+
 def rows(run_dir):
     with open(os.path.join(run_dir, "shear_test.json")) as f:
         doc = json.load(f)
     for c in doc["coals"]:
         series = os.path.join(run_dir, f"series_{c['coal']}.csv")
+        ratios = locus_ratios(c["coal"], c["yield_locus"]) or [math.nan]
         yield {
             "run": os.path.basename(os.path.normpath(run_dir)),
             "coal": c["coal"],
@@ -41,6 +56,9 @@ def rows(run_dir):
             "major_consolidation_kpa": c["major_consolidation_kpa"],
             "ffc": c["ffc"],
             "bulk_density_kg_m3": c["bulk_density_kg_m3"],
+            "locus_ratio_min": min(ratios),
+            "locus_ratio_mean": sum(ratios) / len(ratios),
+            "locus_ratio_max": max(ratios),
             "particles": c["cell"]["particles"],
             "wall_time_s": c["cell"]["wall_time_s"],
         }
