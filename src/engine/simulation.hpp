@@ -125,7 +125,7 @@ class Simulation {
   void pair_forces(int tid, int team, double guard);  // team: the threads of this pass
   template <class K>
   void wall_forces(int tid, double guard);
-  void update_neighbors(bool moved);  // moved: some particle moved over skin/2
+  void update_neighbors(bool moved);  // moved: some particle moved over its allowance
   void reorder_spatially();
   void run_hooks(Phase ph);
   void check_state() const;

@@ -419,6 +419,11 @@ void VerletList::load(ByteReader& r) {
     }
   }
   allow2_all_ = 0.25 * skin * skin;
+  // A NaN or out-of-range allowance would stop the list from ever being rebuilt (missed contacts).
+  for (const double a2 : allow2_)
+    if (!(a2 > 0.0 && a2 <= allow2_all_))
+      throw std::runtime_error(
+          "checkpoint: a skin allowance is outside (0, skin/2] (damaged file)");
   stashed_ = false;
   check_ids_ = false;  // the ids are not in the list's part of the file: trust the checkpoint
 }

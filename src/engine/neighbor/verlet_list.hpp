@@ -51,9 +51,9 @@ class VerletList {
   // Particles were removed, the others kept in order (old index k is now old_to_new[k], -1:
   // removed; ParticleStore::remove_all): drops their rows and entries and renumbers the rest, with
   // the history beside them and the positions at the build. The list stays valid (a pair it does
-  // not hold was out of range at the build and no remaining particle has moved more than skin/2
-  // since), so no rebuild is needed; `builds` is unchanged. False, changing nothing, if the list
-  // was not built for these particles (then stash_history, renumber and build as before).
+  // not hold was out of range at the build and no remaining particle has moved more than its
+  // allowance since), so no rebuild is needed; `builds` is unchanged. False, changing nothing, if
+  // the list was not built for these particles (then stash_history, renumber and build as before).
   bool remove(const ParticleStore& p, const std::vector<int>& old_to_new);
   // Checkpoint: the list as built (its pair order fixes the force summation order, so a resumed
   // run continues bit for bit), the history, and the positions at the build.

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <set>
@@ -228,6 +230,23 @@ TEST(VerletList, SkinFloorGivesEachParticleItsOwnAllowance) {
   p.x[slow].x += 0.02 * floor * 0.5 * skin;
   EXPECT_TRUE(own.needs_rebuild(p));
   EXPECT_FALSE(fixed.needs_rebuild(p));
+
+  // The allowances round-trip through the checkpoint; a damaged one (NaN would stop every
+  // rebuild) is refused on load. The squared allowances are the last 8-byte values written.
+  ByteWriter w;
+  own.save(w);
+  std::vector<unsigned char> bytes = w.bytes();
+  VerletList back;
+  ByteReader r(bytes);
+  back.load(r);
+  EXPECT_TRUE(r.done());
+  for (std::size_t i = 0; i < p.size(); ++i) ASSERT_EQ(back.allowance(i), own.allowance(i)) << i;
+  for (const double bad : {std::nan(""), -1e-12, 1.01 * 0.25 * skin * skin}) {
+    std::memcpy(bytes.data() + bytes.size() - sizeof bad, &bad, sizeof bad);
+    VerletList damaged;
+    ByteReader rd(bytes);
+    EXPECT_THROW(damaged.load(rd), std::runtime_error) << bad;
+  }
 }
 
 // A pile falling onto a floor, particles removed now and then: with the Morton reorder off the
