@@ -3,9 +3,50 @@
 
 #include <fmt/format.h>
 #include <toml++/toml.h>
+#include <algorithm>
 #include <sstream>
+#include <string>
+#include <vector>
 
 namespace silodem {
+
+namespace {
+
+// The numbers that per-coal contact tables set, as each pair kind uses them (after mixing).
+struct PerCoalValue {
+  std::string section, coal_a, coal_b, key;  // coal_b empty: a wall contact; key "slot.key"
+  double value = 0.0;
+};
+
+std::vector<PerCoalValue> per_coal_values(const Case& c) {
+  std::vector<PerCoalValue> out;
+  const int n = int(c.coals.size());
+  for (const auto* spec : {&c.particle_particle, &c.particle_wall}) {
+    if (spec->per_coal.empty()) continue;
+    const bool wall = spec == &c.particle_wall;
+    for (int a = 0; a < n; ++a)
+      for (int b = wall ? -1 : a; b < (wall ? 0 : n); ++b) {
+        const ContactSpec m = spec_for(*spec, a, b);
+        const SlotChoice* slots[4] = {&m.normal, &m.tangential, &m.rolling, &m.cohesion};
+        for (int s = 0; s < 4; ++s) {
+          std::vector<std::string> keys;
+          for (int q : {a, b})
+            if (q >= 0)
+              for (const auto& [key, x] : spec->per_coal[std::size_t(q)].slot[s].numbers)
+                if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+          std::sort(keys.begin(), keys.end());
+          for (const auto& key : keys)
+            out.push_back(
+                {wall ? "particle_wall" : "particle_particle", c.coals[std::size_t(a)].name,
+                 b >= 0 ? c.coals[std::size_t(b)].name : std::string(),
+                 std::string(slot_name(Slot(s))) + "." + key, slots[s]->values.number(key)});
+        }
+      }
+  }
+  return out;
+}
+
+}  // namespace
 
 std::string case_report_json(const Case& c, const CaseReport& r) {
   toml::array materials;
@@ -21,7 +62,7 @@ std::string case_report_json(const Case& c, const CaseReport& r) {
         {"particle_mass_kg", m.measured.particle_mass},
         {"bond_number", m.measured.bond_number},
         {"bond_number_cg", m.bond_number_cg},
-        {"restitution_input", c.particle_particle.normal.values.number("restitution")},
+        {"restitution_input", m.restitution_input},
         {"restitution_cg", m.restitution.value},
         {"restitution_policy", restitution_policy_name(c.cg.restitution_policy)},
         {"restitution_clamped", m.restitution.clamped},
@@ -51,6 +92,17 @@ std::string case_report_json(const Case& c, const CaseReport& r) {
       {"steps_per_collision", r.collision_time_min / r.time_step},
       {"warnings", std::move(warnings)},
   };
+  const auto per_coal = per_coal_values(c);
+  if (!per_coal.empty()) {
+    toml::array rows;
+    for (const auto& v : per_coal) {
+      toml::array coals{v.coal_a};
+      if (!v.coal_b.empty()) coals.push_back(v.coal_b);
+      rows.push_back(toml::table{
+          {"section", v.section}, {"coals", std::move(coals)}, {"key", v.key}, {"value", v.value}});
+    }
+    root.insert("contact_per_coal", std::move(rows));
+  }
   if (c.silo.present) {
     root.insert("fill_plan", std::move(plan));
     root.insert("inventory_calorific_kcal_kg", r.inventory_calorific);
@@ -80,6 +132,15 @@ std::string case_report_text(const Case& c, const CaseReport& r) {
                      m.wall_damping_normal);
     s += fmt::format("  t_col pair / wall            {:.4e} / {:.4e} s\n", m.collision_time,
                      m.wall_collision_time);
+  }
+  const auto per_coal = per_coal_values(c);
+  if (!per_coal.empty()) {
+    s += fmt::format("per-coal contact values (pairs of two coals: {} mean)\n",
+                     c.particle_particle.mixing);
+    for (const auto& v : per_coal)
+      s +=
+          fmt::format("  {} {:<28} {:<32} {:.6g}\n", v.section == "particle_wall" ? "wall" : "pair",
+                      v.coal_b.empty() ? v.coal_a : v.coal_a + "-" + v.coal_b, v.key, v.value);
   }
   s += fmt::format("shortest collision t_col {:.4e} s; time step {:.4e} s; t_col / dt = {:.1f}\n",
                    r.collision_time_min, r.time_step, r.collision_time_min / r.time_step);

@@ -78,7 +78,9 @@ CaseReport derive_case(const ScenarioCase& c, ContactModel* model_out) {
   for (std::size_t a = 0; a < c.coals.size(); ++a) {
     auto& cr = r.coals[a];
     // The restitution the normal law uses after the CG policy (every normal law takes one).
-    cr.restitution = restitution_cg(c.particle_particle.normal.values.number("restitution"), c.cg);
+    cr.restitution_input =
+        spec_for(c.particle_particle, int(a), int(a)).normal.values.number("restitution");
+    cr.restitution = restitution_cg(cr.restitution_input, c.cg);
     const double m_eff = effective_mass(cr.cg_mass, cr.cg_mass);
     const double r_cg = 0.5 * cr.cg_diameter;
     cr.damping_normal = normal_damping_coefficient(model.pair(int(a), int(a)), m_eff, 0.5 * r_cg);

@@ -12,14 +12,15 @@ namespace silodem {
 
 struct CoalReport {
   std::string name;
-  CoalDerived measured;         // porosity, sigma_t, F_L, Bond number of the original particle
-  double cg_diameter = 0.0;     // m
-  double cg_mass = 0.0;         // kg
-  double cohesion_cg = 0.0;     // F_L,cg (N)
-  double bond_number_cg = 0.0;  // F_L,cg / (m_cg g)
-  RestitutionCg restitution;    // e_cg and how it came about (particle-particle law)
-  double damping_normal = 0.0;  // eta_n of a pair of two such CG particles (N s/m)
-  double collision_time = 0.0;  // t_col of that pair (s)
+  CoalDerived measured;            // porosity, sigma_t, F_L, Bond number of the original particle
+  double cg_diameter = 0.0;        // m
+  double cg_mass = 0.0;            // kg
+  double cohesion_cg = 0.0;        // F_L,cg (N)
+  double bond_number_cg = 0.0;     // F_L,cg / (m_cg g)
+  double restitution_input = 0.0;  // e of its own particle-particle contacts, as given
+  RestitutionCg restitution;       // e_cg and how it came about (particle-particle law)
+  double damping_normal = 0.0;     // eta_n of a pair of two such CG particles (N s/m)
+  double collision_time = 0.0;     // t_col of that pair (s)
   double wall_damping_normal = 0.0, wall_collision_time = 0.0;
 };
 

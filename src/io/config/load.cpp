@@ -269,7 +269,70 @@ struct Reader {
     return c;
   }
 
-  ContactSpec contact(const toml::table& root, const std::string& which, bool wall) {
+  // [contact.<which>.coal.<name>]: per coal, numbers of the section's laws that replace its
+  // values in that coal's contacts (ContactSpec::per_coal).
+  std::vector<CoalContactValues> per_coal(const toml::node& n, const std::string& section,
+                                          const ContactSpec& spec,
+                                          const std::vector<std::string>& coals, bool wall) {
+    const std::string where = section + ".coal";
+    const toml::table& t = table_at(n, where);
+    std::vector<CoalContactValues> out(coals.size());
+    const SlotChoice* chosen[4] = {&spec.normal, &spec.tangential, &spec.rolling, &spec.cohesion};
+    for (const auto& [k, node] : t) {
+      const std::string name(k.str());
+      const auto it = std::find(coals.begin(), coals.end(), name);
+      if (it == coals.end()) {
+        const std::string hint = did_you_mean(name, coals);
+        throw InputError(
+            place(node), where + "." + name,
+            fmt::format("\"{}\" is not a [[coal]] name; known: {}{}", name, fmt::join(coals, ", "),
+                        hint.empty() ? "" : " (did you mean '" + hint + "'?)"));
+      }
+      const std::string sec = where + "." + name;
+      const toml::table& ct = table_at(node, sec);
+      CoalContactValues& cv = out[std::size_t(it - coals.begin())];
+      for (const auto& [sk, snode] : ct) {
+        const std::string key(sk.str());
+        int s = -1;
+        for (int q = 0; q < 4; ++q)
+          if (key == slot_name(Slot(q))) s = q;
+        if (s < 0) {
+          const std::string hint =
+              did_you_mean(key, {"normal", "tangential", "rolling", "cohesion"});
+          throw InputError(
+              place(snode), sec + "." + key,
+              "unknown slot" + (hint.empty() ? "; slots are normal, tangential, rolling, cohesion"
+                                             : "; did you mean '" + hint + "'?"));
+        }
+        const std::string full = sec + "." + key;
+        const toml::table& st = table_at(snode, full);
+        if (const toml::node* law = st.get("law"))
+          throw InputError(place(*law), full + ".law",
+                           fmt::format("a coal cannot change the law (\"{}\" for every coal, "
+                                       "set in [{}]); only its numbers may differ per coal",
+                                       chosen[s]->law, section));
+        // The numbers of the section's law, none required and none defaulted.
+        std::vector<Field> fields;
+        for (Field f : find_law(Slot(s), chosen[s]->law)->fields(wall)) {
+          if (f.kind != FieldKind::Number) continue;
+          f.required = false;
+          f.default_number.reset();
+          fields.push_back(std::move(f));
+        }
+        ParamValues v = read(st, fields, full);
+        for (auto g = v.numbers.begin(); g != v.numbers.end();)
+          g = v.was_given(g->first) ? std::next(g) : v.numbers.erase(g);
+        cv.slot[s] = std::move(v);
+      }
+    }
+    bool any = false;
+    for (const auto& cv : out) any = any || !cv.empty();
+    if (!any) out.clear();
+    return out;
+  }
+
+  ContactSpec contact(const toml::table& root, const std::string& which, bool wall,
+                      const std::vector<std::string>& coals) {
     const std::string section = "contact." + which;
     const toml::node* cn = root.get("contact");
     if (!cn)
@@ -281,12 +344,17 @@ struct Reader {
     for (const auto& [k, node] : t) {
       const std::string key(k.str());
       const std::vector<std::string> slots = {"normal", "tangential", "rolling", "cohesion"};
+      if (key == "coal" || (key == "mixing" && !wall)) continue;
       if (std::find(slots.begin(), slots.end(), key) == slots.end()) {
-        const std::string hint = did_you_mean(key, slots);
-        throw InputError(
-            place(node), section + "." + key,
-            "unknown slot" + (hint.empty() ? "; slots are normal, tangential, rolling, cohesion"
-                                           : "; did you mean '" + hint + "'?"));
+        std::vector<std::string> known = slots;
+        known.push_back("coal");
+        if (!wall) known.push_back("mixing");
+        const std::string hint = did_you_mean(key, known);
+        throw InputError(place(node), section + "." + key,
+                         hint.empty() ? fmt::format("unknown key; allowed here: the slots normal, "
+                                                    "tangential, rolling, cohesion, and {}",
+                                                    wall ? "coal" : "coal, mixing")
+                                      : "unknown key; did you mean '" + hint + "'?");
       }
     }
     ContactSpec spec;
@@ -294,6 +362,12 @@ struct Reader {
     spec.tangential = slot(t, section, Slot::Tangential, wall);
     spec.rolling = slot(t, section, Slot::Rolling, wall);
     spec.cohesion = slot(t, section, Slot::Cohesion, wall);
+    if (!wall)
+      spec.mixing = read(t, {contact_mixing_field()}, section,
+                         {"normal", "tangential", "rolling", "cohesion", "coal"})
+                        .string("mixing");
+    if (const toml::node* pc = t.get("coal"))
+      spec.per_coal = per_coal(*pc, section, spec, coals, wall);
     return spec;
   }
 };
@@ -410,8 +484,12 @@ Case build(const toml::table& root, const std::string& file, const std::string& 
     c.coal_places.push_back(v.place);
   }
   // [contact.*]
-  c.particle_particle = r.contact(root, "particle_particle", false);
-  c.particle_wall = r.contact(root, "particle_wall", true);
+  {
+    std::vector<std::string> names;
+    for (const auto& coal : c.coals) names.push_back(coal.name);
+    c.particle_particle = r.contact(root, "particle_particle", false, names);
+    c.particle_wall = r.contact(root, "particle_wall", true, names);
+  }
   for (const ContactSpec* spec : {&c.particle_particle, &c.particle_wall}) {
     if (spec->cohesion.law == "none") continue;
     for (std::size_t k = 0; k < c.coals.size(); ++k)

@@ -149,6 +149,14 @@ static std::string field_row(const Field& f) {
                      f.unit.empty() ? "-" : f.unit, def, range.empty() ? "-" : range, doc);
 }
 
+Field contact_mixing_field() {
+  return Field::text("mixing",
+                     "a contact of two different coals takes, for each number that a "
+                     "[contact.particle_particle.coal.NAME] table replaces, this mean of the two "
+                     "coals' values (harmonic: MercuryDPM's default for mixed species)",
+                     {"harmonic", "mean", "min"}, "harmonic");
+}
+
 static const char* kHeader =
     "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
 
@@ -170,7 +178,18 @@ std::string markdown() {
   md +=
       "\n## [contact.particle_particle] and [contact.particle_wall]\n\n"
       "Four slots, each an inline table `{ law = \"...\", ... }`: `normal` (required), "
-      "`tangential`, `rolling`, `cohesion` (default `none`). Laws and their keys:\n";
+      "`tangential`, `rolling`, `cohesion` (default `none`).\n\n"
+      "**Per-coal values.** A table `[contact.particle_particle.coal.NAME]` (or\n"
+      "`[contact.particle_wall.coal.NAME]`), NAME a `[[coal]]` name, holds slot tables of numbers\n"
+      "that replace the section's in the contacts of that coal, e.g. `normal = {\n"
+      "adhesion_stiffness = 2.5e4 }`. The laws stay the section's: only their numbers may differ.\n"
+      "A wall contact takes its coal's values; a contact of two different coals takes, number by\n"
+      "number, the `mixing` mean of the two coals' values (a coal without its own value gives the\n"
+      "section's). On the command line: `--set\n"
+      "contact.particle_particle.coal.NAME.normal.adhesion_stiffness=2.5e4`.\n\n";
+  md += kHeader;
+  md += field_row(contact_mixing_field()).replace(0, 1, "| (particle_particle only) ");
+  md += "\nLaws and their keys:\n";
   for (Slot slot : {Slot::Normal, Slot::Tangential, Slot::Rolling, Slot::Cohesion}) {
     for (const auto& e : contact_laws()) {
       if (e.slot != slot) continue;

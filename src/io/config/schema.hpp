@@ -22,6 +22,9 @@ const Section& section(const std::string& name);
 // Top-level keys a case file may contain.
 std::vector<std::string> top_level_keys();
 
+// [contact.particle_particle] mixing: how a pair of two coals combines their per-coal values.
+Field contact_mixing_field();
+
 // Closest candidate by edit distance, or empty when nothing is close.
 std::string did_you_mean(const std::string& word, const std::vector<std::string>& candidates);
 

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
+#include "model/contact/cohesion_common.hpp"
 #include "model/contact/dispatch.hpp"
 
 namespace silodem {
@@ -37,6 +39,58 @@ ContactLaw configure_contact_law(const ContactSpec& spec, const LawContext& ctx)
   return law;
 }
 
+bool CoalContactValues::empty() const {
+  for (const auto& v : slot)
+    if (!v.numbers.empty()) return false;
+  return true;
+}
+
+ContactSpec spec_for(const ContactSpec& spec, int a, int b) {
+  ContactSpec out = spec;
+  out.per_coal.clear();
+  auto values_of = [&](int coal, int s) -> const ParamValues* {
+    if (coal < 0 || std::size_t(coal) >= spec.per_coal.size()) return nullptr;
+    const ParamValues& v = spec.per_coal[std::size_t(coal)].slot[s];
+    return v.numbers.empty() ? nullptr : &v;
+  };
+  SlotChoice* slots[4] = {&out.normal, &out.tangential, &out.rolling, &out.cohesion};
+  for (int s = 0; s < 4; ++s) {
+    const ParamValues* va = values_of(a, s);
+    const ParamValues* vb = b == a ? nullptr : values_of(b, s);
+    if (!va && !vb) continue;
+    ParamValues& v = slots[s]->values;
+    const ParamValues& base = v;
+    std::map<std::string, double> merged;
+    std::map<std::string, SourcePlace> places;
+    for (const ParamValues* over : {va, vb}) {
+      if (!over) continue;
+      for (const auto& [key, x] : over->numbers) {
+        if (merged.count(key)) continue;
+        auto value = [&](const ParamValues* o) {
+          if (o) {
+            auto it = o->numbers.find(key);
+            if (it != o->numbers.end()) return it->second;
+          }
+          return base.number(key);
+        };
+        const double xa = value(va), xb = b < 0 ? xa : value(b == a ? va : vb);
+        if (b >= 0 && b != a && spec.mixing == "harmonic" && (xa < 0.0 || xb < 0.0))
+          throw over->error(key, "is negative; the \"" + spec.mixing +
+                                     "\" mixing of two coals' values needs values >= 0");
+        merged[key] = cohesion_pair_rule(spec.mixing, xa, xb);
+        places[key] = over->places.count(key) ? over->places.at(key) : over->place;
+      }
+    }
+    for (const auto& [key, x] : merged) {
+      v.numbers[key] = x;
+      v.given[key] = true;
+      v.places[key] = places[key];
+    }
+    v.section = (va ? va : vb)->section;
+  }
+  return out;
+}
+
 ContactModel ContactModel::build(const ContactSpec& pp, const ContactSpec& pw,
                                  const std::vector<double>& cohesion_cg, const CoarseGraining& cg,
                                  std::vector<std::string>* warnings) {
@@ -46,12 +100,12 @@ ContactModel ContactModel::build(const ContactSpec& pp, const ContactSpec& pw,
   for (int a = 0; a < m.n_; ++a) {
     for (int b = 0; b < m.n_; ++b) {
       LawContext ctx{&cg, cohesion_cg[a], cohesion_cg[b], false, &raw};
-      m.pp_.push_back(configure_contact_law(pp, ctx));
+      m.pp_.push_back(configure_contact_law(spec_for(pp, a, b), ctx));
     }
   }
   for (int a = 0; a < m.n_; ++a) {
     LawContext ctx{&cg, cohesion_cg[a], 0.0, true, &raw};
-    m.pw_.push_back(configure_contact_law(pw, ctx));
+    m.pw_.push_back(configure_contact_law(spec_for(pw, a, -1), ctx));
   }
   for (const auto& l : m.pp_) m.max_reach_ = std::max(m.max_reach_, l.reach_over_d);
   for (const auto& l : m.pw_) m.max_reach_ = std::max(m.max_reach_, l.reach_over_d);

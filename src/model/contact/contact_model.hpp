@@ -18,10 +18,26 @@ struct SlotChoice {
   ParamValues values;  // validated against the law's fields
 };
 
+// [contact.<section>.coal.<name>]: numbers that replace the section's in the contacts of one
+// coal, slot by slot (only the keys given; `section` of each names the override table). The laws
+// stay the section's: only their parameters differ between coals.
+struct CoalContactValues {
+  ParamValues slot[4];  // by Slot
+  bool empty() const;
+};
+
 // The case file's [contact.particle_particle] or [contact.particle_wall].
 struct ContactSpec {
   SlotChoice normal, tangential, rolling, cohesion;
+  // By coal index (empty: no coal has its own values). A pair of two different coals takes, for
+  // each number either coal replaces, the `mixing` mean of the two coals' values (mean | min |
+  // harmonic, as cohesion_pair_rule); a wall contact takes its coal's values.
+  std::vector<CoalContactValues> per_coal;
+  std::string mixing = "harmonic";
 };
+
+// The spec of the contacts of coal a with coal b (b < 0: with a wall), per-coal values applied.
+ContactSpec spec_for(const ContactSpec& spec, int a, int b);
 
 // One law per slot for one kind of pair (coal a - coal b, or coal a - wall): each law's own
 // Params, and where its per-contact values sit.

@@ -9,6 +9,7 @@
 
 #include "io/config/load.hpp"
 #include "io/config/schema.hpp"
+#include "io/report_json.hpp"
 #include "scenario/setup.hpp"
 
 namespace silodem {
@@ -237,6 +238,128 @@ TEST(Config, AGivenKeyReachesItsMemberAndTheRestKeepTheSpecDefaults) {
   EXPECT_EQ(*c.coals[0].cohesion_force_override, 0.0);
   EXPECT_EQ(c.time.threads, 2);
   EXPECT_EQ(c.time.gravity.z, TimeSpec{}.gravity.z);
+}
+
+// Two coals: base.toml's Longwanggou and the paper's Indonesian (Table 1), particle 2 of the
+// second coal, 50 mm from the first, and `extra` appended (per-coal contact tables).
+std::string two_coals(const std::string& extra = {}) {
+  std::string t = replace(base(), "[contact.particle_particle]",
+                          "[[coal]]\nname = \"Indonesian\"\ndiameter_mm = 3.2\n"
+                          "bulk_density_kg_m3 = 728\ntrue_density_kg_m3 = 1268\n"
+                          "cohesion_kpa = 0.68\nfriction_angle_deg = 37.2\n"
+                          "moisture_percent = 35.1\nheating_value_kcal_kg = 3108\n\n"
+                          "[contact.particle_particle]");
+  t = replace(t, "coal = \"Longwanggou\"\nposition = [0.02,",
+              "coal = \"Indonesian\"\nposition = [0.05,");
+  return t + extra;
+}
+
+TEST(Config, PerCoalContactValuesReachTheirPairsAndMixForTwoCoals) {
+  const std::string over =
+      "\n[contact.particle_particle.coal.Indonesian]\n"
+      "normal = { stiffness = 4.0e5 }\ntangential = { friction = 0.5 }\n"
+      "\n[contact.particle_wall.coal.Indonesian]\ntangential = { friction = 0.3 }\n";
+  ContactModel m;
+  const Case c = config::load_case_text(two_coals(over), "case.toml");
+  const CaseReport r = derive_case(c, &m);
+  ASSERT_EQ(m.materials(), 2);
+  auto mu = [](const ContactLaw& l) { return l.params<TangentialLinearHistory>().friction; };
+  auto kn = [](const ContactLaw& l) { return l.params<NormalLinearSpringDashpot>().stiffness; };
+  EXPECT_EQ(mu(m.pair(0, 0)), 0.09);  // Longwanggou keeps the section's values
+  EXPECT_EQ(kn(m.pair(0, 0)), 1.0e5);
+  EXPECT_EQ(mu(m.pair(1, 1)), 0.5);
+  EXPECT_EQ(kn(m.pair(1, 1)), 4.0e5);
+  // Two coals: the harmonic mean 2 a b / (a + b) of each number (the default mixing).
+  EXPECT_NEAR(mu(m.pair(0, 1)), 2.0 * 0.09 * 0.5 / 0.59, 1e-14);
+  EXPECT_NEAR(kn(m.pair(1, 0)), 1.6e5, 1e-9);
+  EXPECT_EQ(mu(m.pair(0, 1)), mu(m.pair(1, 0)));
+  EXPECT_EQ(mu(m.wall(0)), 0.1);
+  EXPECT_EQ(mu(m.wall(1)), 0.3);
+  EXPECT_EQ(kn(m.wall(1)), 1.0e5);  // no wall stiffness of its own
+  // The stiffer pair sets the time step: t_col = pi / sqrt(k / m_eff (1 - zeta^2)) scales as
+  // k^-1/2, so Indonesian-Indonesian at 4e5 is half its t_col at the section's 1e5.
+  ContactModel plain;
+  const CaseReport r0 = derive_case(config::load_case_text(two_coals(), "case.toml"), &plain);
+  EXPECT_NEAR(r.coals[1].collision_time / r0.coals[1].collision_time, 0.5, 1e-12);
+  EXPECT_EQ(r.coals[0].collision_time, r0.coals[0].collision_time);
+  EXPECT_LT(r.collision_time_min, r0.collision_time_min);
+  // `check` lists what each pair kind uses.
+  const std::string text = case_report_text(c, r);
+  EXPECT_TRUE(std::regex_search(
+      text, std::regex("pair Longwanggou-Indonesian +tangential\\.friction +0\\.152542\n")))
+      << text;
+  EXPECT_TRUE(
+      std::regex_search(text, std::regex("wall Indonesian +tangential\\.friction +0\\.3\n")))
+      << text;
+  // mixing = "mean": the arithmetic mean.
+  const std::string mean = replace(two_coals(over), "[contact.particle_particle]\n",
+                                   "[contact.particle_particle]\nmixing = \"mean\"\n");
+  ContactModel mm;
+  derive_case(config::load_case_text(mean, "case.toml"), &mm);
+  EXPECT_NEAR(mu(mm.pair(0, 1)), 0.295, 1e-15);
+  EXPECT_NEAR(kn(mm.pair(0, 1)), 2.5e5, 1e-9);
+  EXPECT_EQ(mu(mm.pair(1, 1)), 0.5);
+}
+
+TEST(Config, PerCoalContactValuesFromTheCommandLine) {
+  const std::string path = ::testing::TempDir() + "/per_coal.toml";
+  {
+    std::ofstream out(path);
+    out << two_coals();
+  }
+  ContactModel m;
+  derive_case(config::load_case_file(
+                  path, {"contact.particle_particle.coal.Indonesian.tangential.friction=0.5"}),
+              &m);
+  EXPECT_EQ(m.pair(1, 1).params<TangentialLinearHistory>().friction, 0.5);
+  EXPECT_EQ(m.pair(0, 0).params<TangentialLinearHistory>().friction, 0.09);
+}
+
+TEST(Config, PerCoalContactValuesRefuseWhatCannotDifferPerCoal) {
+  const std::string head = "\n[contact.particle_particle.coal.Indonesian]\n";
+  expect_error(two_coals("\n[contact.particle_particle.coal.Indonesain]\n"
+                         "tangential = { friction = 0.5 }\n"),
+               "[contact.particle_particle.coal.Indonesain]",
+               {"contact.particle_particle.coal.Indonesain", "not a [[coal]] name",
+                "did you mean 'Indonesian'"});
+  expect_error(two_coals(head + "rolling = { law = \"epsd\", friction = 0.3 }\n"),
+               "rolling = { law = \"epsd\"",
+               {"contact.particle_particle.coal.Indonesian.rolling.law", "cannot change the law",
+                "\"mfix\""});
+  expect_error(
+      two_coals(head + "tangential = { friction = -0.5 }\n"), "friction = -0.5",
+      {"contact.particle_particle.coal.Indonesian.tangential.friction", "-0.5", "out of range"});
+  expect_error(two_coals(head + "cohesion = { pair_rule = \"min\" }\n"), "pair_rule = \"min\"",
+               {"contact.particle_particle.coal.Indonesian.cohesion.pair_rule", "unknown key"});
+  expect_error(two_coals(head + "tangentail = { friction = 0.5 }\n"), "tangentail",
+               {"unknown slot", "did you mean 'tangential'"});
+  expect_error(replace(two_coals(), "[contact.particle_particle]\n",
+                       "[contact.particle_particle]\nmixing = \"geometric\"\n"),
+               "mixing = \"geometric\"", {"mixing", "geometric", "harmonic, mean, min"});
+  expect_error(replace(two_coals(), "[contact.particle_wall]\n",
+                       "[contact.particle_wall]\nmixing = \"mean\"\n"),
+               "mixing = \"mean\"", {"contact.particle_wall.mixing", "unknown key"});
+}
+
+// Behaviour: each coal rests on the floor on its own wall stiffness. A sphere at rest on a plane
+// under gravity compresses a linear spring by m g / k_n (force balance; cohesion off).
+TEST(Config, EachCoalRestsOnItsOwnWallStiffness) {
+  std::string t =
+      two_coals("\n[contact.particle_wall.coal.Indonesian]\nnormal = { stiffness = 1.0e3 }\n");
+  for (int i = 0; i < 2; ++i)
+    t = replace(t, "cohesion   = { law = \"overlap-only\" }", "cohesion   = { law = \"none\" }");
+  const Case c = config::load_case_text(t, "case.toml");
+  ContactModel model;
+  const CaseReport r = derive_case(c, &model);
+  auto sim = build_simulation(c, r, std::move(model));
+  sim->run_until(0.5);
+  const ParticleStore& p = sim->particles();
+  ASSERT_EQ(p.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double k = p.material[i] == 1 ? 1.0e3 : 1.0e5;
+    const double overlap = p.radius[i] - p.x[i].z;
+    EXPECT_NEAR(overlap / (p.mass[i] * 9.81 / k), 1.0, 0.01) << "coal " << p.material[i];
+  }
 }
 
 }  // namespace
