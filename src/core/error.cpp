@@ -20,6 +20,7 @@ static std::string compose(const SourcePlace& p, const std::string& key, const s
 InputError::InputError(SourcePlace place, std::string key, std::string message)
     : std::runtime_error(compose(place, key, message)),
       place_(std::move(place)),
-      key_(std::move(key)) {}
+      key_(std::move(key)),
+      message_(std::move(message)) {}
 
 }  // namespace silodem

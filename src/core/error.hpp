@@ -20,10 +20,12 @@ class InputError : public std::runtime_error {
   InputError(SourcePlace place, std::string key, std::string message);
   const SourcePlace& place() const { return place_; }
   const std::string& key() const { return key_; }
+  const std::string& message() const { return message_; }
 
  private:
   SourcePlace place_;
   std::string key_;
+  std::string message_;
 };
 
 // A running simulation that went wrong (NaN, escaping particle, ...).

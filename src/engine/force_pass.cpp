@@ -78,10 +78,10 @@ void Simulation::pair_forces(int tid, int team, double guard) {
     // lists. Then the history of the pairs out of range is cleared, and only the pairs in
     // range are copied into the lanes (the flush writes their new history back), so the data
     // of j are loaded only for pairs that touch. "In range" is tested with the longest reach
-    // of the coal pairs, so it needs neither j's coal nor its law. ContactModel::build gives
-    // every pair the same reach (one cohesion section, one range), so that is each pair's own;
-    // were they to differ, a pair beyond its own reach would still come out right: evaluate()
-    // gives it zero force and a cleared history, as the miss list does.
+    // of the coal pairs, so it needs neither j's coal nor its law. Every pair has the same reach
+    // (one cohesion section) unless a per-coal table changes a range; where they differ, a pair
+    // beyond its own reach still comes out right: evaluate() gives it zero force and a cleared
+    // history, as the miss list does.
     const int e0 = list_.offset[i], e1 = list_.offset[i + 1];
     if (w.hits.size() < std::size_t(e1 - e0)) {
       w.hits.resize(std::size_t(e1 - e0));

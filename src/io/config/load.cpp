@@ -313,12 +313,26 @@ struct Reader {
                                        chosen[s]->law, section));
         // The numbers of the section's law, none required and none defaulted.
         std::vector<Field> fields;
+        std::vector<std::string> others;  // its keys that are not numbers
         for (Field f : find_law(Slot(s), chosen[s]->law)->fields(wall)) {
-          if (f.kind != FieldKind::Number) continue;
+          if (f.kind != FieldKind::Number) {
+            others.push_back(f.key);
+            continue;
+          }
           f.required = false;
           f.default_number.reset();
           fields.push_back(std::move(f));
         }
+        if (fields.empty() && !st.empty())
+          throw InputError(place(snode), full,
+                           fmt::format("the {} law of [{}] is \"{}\", which has no numbers to set "
+                                       "per coal",
+                                       key, section, chosen[s]->law));
+        for (const auto& [ok, onode] : st)
+          if (std::find(others.begin(), others.end(), std::string(ok.str())) != others.end())
+            throw InputError(
+                place(onode), full + "." + std::string(ok.str()),
+                "cannot differ per coal: only numbers can (set it in [" + section + "])");
         ParamValues v = read(st, fields, full);
         for (auto g = v.numbers.begin(); g != v.numbers.end();)
           g = v.was_given(g->first) ? std::next(g) : v.numbers.erase(g);
@@ -366,8 +380,10 @@ struct Reader {
       spec.mixing = read(t, {contact_mixing_field()}, section,
                          {"normal", "tangential", "rolling", "cohesion", "coal"})
                         .string("mixing");
-    if (const toml::node* pc = t.get("coal"))
+    if (const toml::node* pc = t.get("coal")) {
       spec.per_coal = per_coal(*pc, section, spec, coals, wall);
+      spec.coal_names = coals;
+    }
     return spec;
   }
 };

@@ -186,7 +186,8 @@ std::string markdown() {
       "A wall contact takes its coal's values; a contact of two different coals takes, number by\n"
       "number, the `mixing` mean of the two coals' values (a coal without its own value gives the\n"
       "section's). On the command line: `--set\n"
-      "contact.particle_particle.coal.NAME.normal.adhesion_stiffness=2.5e4`.\n\n";
+      "contact.particle_particle.coal.NAME.normal.adhesion_stiffness=2.5e4` (`--set` splits keys\n"
+      "at dots, so it cannot reach a coal whose name has one).\n\n";
   md += kHeader;
   md += field_row(contact_mixing_field()).replace(0, 1, "| (particle_particle only) ");
   md += "\nLaws and their keys:\n";

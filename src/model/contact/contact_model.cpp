@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
 #include "model/contact/contact_model.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <map>
 
-#include "model/contact/cohesion_common.hpp"
 #include "model/contact/dispatch.hpp"
 
 namespace silodem {
@@ -45,6 +46,12 @@ bool CoalContactValues::empty() const {
   return true;
 }
 
+double mix_values(const std::string& mixing, double x, double y) {
+  if (mixing == "min") return std::min(x, y);
+  if (mixing == "harmonic") return x == 0.0 || y == 0.0 ? 0.0 : 2.0 / (1.0 / x + 1.0 / y);
+  return 0.5 * x + 0.5 * y;
+}
+
 ContactSpec spec_for(const ContactSpec& spec, int a, int b) {
   ContactSpec out = spec;
   out.per_coal.clear();
@@ -73,11 +80,8 @@ ContactSpec spec_for(const ContactSpec& spec, int a, int b) {
           }
           return base.number(key);
         };
-        const double xa = value(va), xb = b < 0 ? xa : value(b == a ? va : vb);
-        if (b >= 0 && b != a && spec.mixing == "harmonic" && (xa < 0.0 || xb < 0.0))
-          throw over->error(key, "is negative; the \"" + spec.mixing +
-                                     "\" mixing of two coals' values needs values >= 0");
-        merged[key] = cohesion_pair_rule(spec.mixing, xa, xb);
+        const double xa = value(va);
+        merged[key] = b < 0 || b == a ? xa : mix_values(spec.mixing, xa, value(vb));
         places[key] = over->places.count(key) ? over->places.at(key) : over->place;
       }
     }
@@ -97,16 +101,31 @@ ContactModel ContactModel::build(const ContactSpec& pp, const ContactSpec& pw,
   ContactModel m;
   m.n_ = static_cast<int>(cohesion_cg.size());
   std::vector<std::string> raw;
+  m.pp_.resize(std::size_t(m.n_) * std::size_t(m.n_));
+  // Each coal's own contacts first (its values unmixed), so that a per-coal value that does not
+  // fit the section's others is reported as that coal's before any mixed pair is built.
   for (int a = 0; a < m.n_; ++a) {
+    m.pp_[std::size_t(a * m.n_ + a)] = configure_contact_law(
+        spec_for(pp, a, a), {&cg, cohesion_cg[a], cohesion_cg[a], false, &raw});
+    m.pw_.push_back(
+        configure_contact_law(spec_for(pw, a, -1), {&cg, cohesion_cg[a], 0.0, true, &raw}));
+  }
+  for (int a = 0; a < m.n_; ++a)
     for (int b = 0; b < m.n_; ++b) {
-      LawContext ctx{&cg, cohesion_cg[a], cohesion_cg[b], false, &raw};
-      m.pp_.push_back(configure_contact_law(spec_for(pp, a, b), ctx));
+      if (a == b) continue;
+      try {
+        m.pp_[std::size_t(a * m.n_ + b)] = configure_contact_law(
+            spec_for(pp, a, b), {&cg, cohesion_cg[a], cohesion_cg[b], false, &raw});
+      } catch (const InputError& e) {
+        if (pp.per_coal.empty() || pp.coal_names.size() != std::size_t(m.n_)) throw;
+        throw InputError(
+            e.place(), e.key(),
+            e.message() + fmt::format(" (in the contacts of coal \"{}\" with coal \"{}\", whose "
+                                      "values are the \"{}\" mean of the two coals')",
+                                      pp.coal_names[std::size_t(a)], pp.coal_names[std::size_t(b)],
+                                      pp.mixing));
+      }
     }
-  }
-  for (int a = 0; a < m.n_; ++a) {
-    LawContext ctx{&cg, cohesion_cg[a], 0.0, true, &raw};
-    m.pw_.push_back(configure_contact_law(spec_for(pw, a, -1), ctx));
-  }
   for (const auto& l : m.pp_) m.max_reach_ = std::max(m.max_reach_, l.reach_over_d);
   for (const auto& l : m.pw_) m.max_reach_ = std::max(m.max_reach_, l.reach_over_d);
   if (warnings) {

@@ -33,11 +33,15 @@ struct ContactSpec {
   // each number either coal replaces, the `mixing` mean of the two coals' values (mean | min |
   // harmonic, as cohesion_pair_rule); a wall contact takes its coal's values.
   std::vector<CoalContactValues> per_coal;
+  std::vector<std::string> coal_names;  // for messages about a pair of two coals
   std::string mixing = "harmonic";
 };
 
-// The spec of the contacts of coal a with coal b (b < 0: with a wall), per-coal values applied.
+// The spec of the contacts of coal a with coal b (b < 0: with a wall), per-coal values applied:
+// coal a's own values exactly for b == a or a wall, the `mixing` mean for two coals.
 ContactSpec spec_for(const ContactSpec& spec, int a, int b);
+// mean | min | harmonic (2 / (1/x + 1/y); 0 if either is 0) of two non-negative values.
+double mix_values(const std::string& mixing, double x, double y);
 
 // One law per slot for one kind of pair (coal a - coal b, or coal a - wall): each law's own
 // Params, and where its per-contact values sit.

@@ -301,6 +301,44 @@ TEST(Config, PerCoalContactValuesReachTheirPairsAndMixForTwoCoals) {
   EXPECT_EQ(mu(mm.pair(1, 1)), 0.5);
 }
 
+TEST(Config, PerCoalValuesOfBothCoalsMixKeyByKeyAndStayExactForOneCoal) {
+  // Both coals set the friction, each one key more; 0.1 and 0.7 are not exact in binary, so a
+  // value passed through a mean of itself (2 x x / (x + x)) could come back changed.
+  const std::string tables =
+      "\n[contact.particle_particle.coal.Longwanggou]\n"
+      "tangential = { friction = 0.1 }\nrolling = { friction = 0.7 }\n"
+      "\n[contact.particle_particle.coal.Indonesian]\n"
+      "tangential = { friction = 0.3 }\nnormal = { stiffness = 3.0e5 }\n"
+      "\n[contact.particle_wall.coal.Longwanggou]\ntangential = { friction = 0.7 }\n";
+  auto model = [&](const std::string& mixing) {
+    std::string t = two_coals(tables);
+    if (!mixing.empty())
+      t = replace(t, "[contact.particle_particle]\n",
+                  "[contact.particle_particle]\nmixing = \"" + mixing + "\"\n");
+    ContactModel m;
+    derive_case(config::load_case_text(t, "case.toml"), &m);
+    return m;
+  };
+  auto mu = [](const ContactLaw& l) { return l.params<TangentialLinearHistory>().friction; };
+  auto mur = [](const ContactLaw& l) { return l.params<RollingMfix>().friction; };
+  auto kn = [](const ContactLaw& l) { return l.params<NormalLinearSpringDashpot>().stiffness; };
+  const ContactModel h = model(""), mn = model("min");
+  for (const ContactModel* m : {&h, &mn}) {
+    EXPECT_EQ(mu(m->pair(0, 0)), 0.1);  // exactly a coal's own value
+    EXPECT_EQ(mur(m->pair(0, 0)), 0.7);
+    EXPECT_EQ(mu(m->pair(1, 1)), 0.3);
+    EXPECT_EQ(mur(m->pair(1, 1)), 0.6);  // the section's
+    EXPECT_EQ(mu(m->wall(0)), 0.7);
+    EXPECT_EQ(mu(m->wall(1)), 0.1);  // the section's wall friction
+  }
+  EXPECT_NEAR(mu(h.pair(0, 1)), 0.15, 1e-15);  // 2 / (1/0.1 + 1/0.3)
+  EXPECT_NEAR(mur(h.pair(1, 0)), 2.0 / (1.0 / 0.7 + 1.0 / 0.6), 1e-15);
+  EXPECT_NEAR(kn(h.pair(0, 1)), 1.5e5, 1e-9);  // 2 / (1/1e5 + 1/3e5)
+  EXPECT_EQ(mu(mn.pair(0, 1)), 0.1);
+  EXPECT_EQ(mur(mn.pair(0, 1)), 0.6);
+  EXPECT_EQ(kn(mn.pair(1, 0)), 1.0e5);
+}
+
 TEST(Config, PerCoalContactValuesFromTheCommandLine) {
   const std::string path = ::testing::TempDir() + "/per_coal.toml";
   {
@@ -329,8 +367,28 @@ TEST(Config, PerCoalContactValuesRefuseWhatCannotDifferPerCoal) {
   expect_error(
       two_coals(head + "tangential = { friction = -0.5 }\n"), "friction = -0.5",
       {"contact.particle_particle.coal.Indonesian.tangential.friction", "-0.5", "out of range"});
-  expect_error(two_coals(head + "cohesion = { pair_rule = \"min\" }\n"), "pair_rule = \"min\"",
-               {"contact.particle_particle.coal.Indonesian.cohesion.pair_rule", "unknown key"});
+  expect_error(
+      two_coals(head + "cohesion = { pair_rule = \"min\" }\n"), "pair_rule = \"min\"",
+      {"contact.particle_particle.coal.Indonesian.cohesion.pair_rule", "cannot differ per coal"});
+  expect_error(
+      replace(two_coals(head + "rolling = { friction = 0.3 }\n"),
+              "rolling    = { law = \"mfix\", friction = 0.6 }", "rolling    = { law = \"none\" }"),
+      "rolling = { friction = 0.3 }",
+      {"contact.particle_particle.coal.Indonesian.rolling", "\"none\"", "no numbers"});
+  // A per-coal value that does not fit the section's other values is that coal's error, found
+  // in its own contacts before any pair of two coals (Luding: unloading above loading stiffness).
+  const std::string luding =
+      "normal     = { law = \"luding\", stiffness = 1.0e5, unloading_stiffness = 1.5e5, "
+      "adhesion_stiffness = 0.0, restitution = 0.1 }";
+  expect_error(replace(two_coals("\n[contact.particle_particle.coal.Longwanggou]\n"
+                                 "normal = { restitution = 0.5 }\n" +
+                                 head + "normal = { stiffness = 1.0e6 }\n"),
+                       "normal     = { law = \"linear_spring_dashpot\", stiffness = 1.0e5, "
+                       "restitution = 0.1 }",
+                       luding),
+               "unloading_stiffness = 1.5e5",
+               {"contact.particle_particle.coal.Indonesian.normal.unloading_stiffness",
+                "must be larger than 'stiffness' (1000000"});
   expect_error(two_coals(head + "tangentail = { friction = 0.5 }\n"), "tangentail",
                {"unknown slot", "did you mean 'tangential'"});
   expect_error(replace(two_coals(), "[contact.particle_particle]\n",
