@@ -79,6 +79,9 @@ def factor_of(run_dir):
         for line in open(path, encoding="utf-8"):
             if line.startswith("contact.particle_particle.cohesion.factor="):
                 return float(line.split("=", 1)[1])
+            if line.startswith("contact.particle_particle.coal.") and ".cohesion.factor=" in line:
+                raise SystemExit(f"{path}: '{line.strip()}': a per-coal cohesion factor is not "
+                                 "supported here (Bo_cg and Pi take one factor for every coal)")
     return math.nan
 
 
