@@ -75,13 +75,16 @@ def run_numbers(run_dir):
 def factor_of(run_dir):
     """The particle-particle cohesion factor of a run (from its overrides, else its case)."""
     path = os.path.join(run_dir, "overrides.txt")
-    if os.path.exists(path):
-        for line in open(path, encoding="utf-8"):
-            if line.startswith("contact.particle_particle.cohesion.factor="):
-                return float(line.split("=", 1)[1])
-            if line.startswith("contact.particle_particle.coal.") and ".cohesion.factor=" in line:
-                raise SystemExit(f"{path}: '{line.strip()}': a per-coal cohesion factor is not "
-                                 "supported here (Bo_cg and Pi take one factor for every coal)")
+    if not os.path.exists(path):
+        return math.nan
+    lines = open(path, encoding="utf-8").read().splitlines()
+    for line in lines:
+        if line.startswith("contact.particle_particle.coal.") and ".cohesion.factor=" in line:
+            raise SystemExit(f"{path}: '{line}': a per-coal cohesion factor is not supported "
+                             "here (Bo_cg and Pi take one factor for every coal)")
+    for line in lines:
+        if line.startswith("contact.particle_particle.cohesion.factor="):
+            return float(line.split("=", 1)[1])
     return math.nan
 
 
