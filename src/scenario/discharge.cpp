@@ -117,6 +117,21 @@ void Discharge::check(double t, std::vector<std::size_t>& remove) {
   sim_.remove_particles(remove);
 }
 
+void Discharge::book_in_flight(std::vector<std::size_t>& remove) {
+  auto& p = sim_.particles();
+  remove.clear();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p.x[i].z >= 0.0) continue;
+    const auto c = crossed_.find(p.id[i]);  // check() has just classified every centre below 0
+    if (c == crossed_.end() || c->second.t < 0.0) continue;
+    r_.outflow.push_back({c->second.t, p.material[i], p.mass[i]});
+    r_.discharged_mass += p.mass[i];
+    remove.push_back(i);
+  }
+  for (std::size_t i : remove) crossed_.erase(p.id[i]);
+  sim_.remove_particles(remove);
+}
+
 DischargeResult Discharge::run(const DischargeProgress& progress, const DischargeControl& control) {
   auto& p = sim_.particles();
   DischargeState st;
@@ -161,6 +176,7 @@ DischargeResult Discharge::run(const DischargeProgress& progress, const Discharg
         break;
       }
       if (t >= spec_.max_time) {
+        book_in_flight(remove);
         r_.end = DischargeEnd::TimeLimit;
         break;
       }

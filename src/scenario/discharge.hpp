@@ -7,7 +7,9 @@
 // outlet plane outside the outlet, are removed and counted as lost, each with a record (lost.csv).
 // A particle that left through the outlet and then came back up outside the cone, round the rim
 // (a cohesive particle can swing round the rim edge), has left the silo: it is removed there and
-// counted as discharged. Ends when the target fraction has left or the silo is empty, when
+// counted as discharged. A run stopped by `max_time` books the particles still falling between
+// the outlet and the sink at their crossing times, as the sink would have. Ends when the target
+// fraction has left or the silo is empty, when
 // nothing has left for `stall_time` (a stopped flow: arching, reported as such; the clock starts
 // once a particle could have reached the sink), at `max_time`, or on a simulation error (the
 // results up to then are kept), or when the caller asks it to stop (a signal; the state is then
@@ -108,6 +110,8 @@ class Discharge {
   DischargeResult finish(DischargeResult r) const;
   void note_crossings();  // after every step: where centres first go below z = 0
   void check(double t, std::vector<std::size_t>& remove);
+  // At the time limit: what went out through the outlet and is still falling to the sink.
+  void book_in_flight(std::vector<std::size_t>& remove);
   void add_lost(double t, std::size_t i, LostReason why, double crossing_r);
 
   Simulation& sim_;

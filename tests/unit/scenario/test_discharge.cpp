@@ -69,6 +69,26 @@ TEST(DischargeClassification, DriftingSidewaysAfterTheOutletIsDischarged) {
   EXPECT_NEAR(r.end_time, 3 * kCheck, 1e-12);
 }
 
+TEST(DischargeClassification, AtTheTimeLimitWhatIsFallingToTheSinkIsDischarged) {
+  // From (0, 0, 1) mm at -0.1 m/s the centre crosses z = 0 at t = 10 ms (inside the outlet) and
+  // would reach the sink (z < -20 mm) at 210 ms, after max_time (100 ms): at the time limit it is
+  // between the outlet and the sink, has left the silo, and is booked at its crossing (the check
+  // at 10 or 11 ms). A second sphere rests in the cone (gravity off) and stays.
+  Silo s;
+  s.add({0, 0, 0.001}, {0, 0, -0.1});
+  s.add({0, 0, 0.3}, {});
+  Discharge d(*s.sim, s.g, s.valve, spec());
+  d.open();
+  const DischargeResult r = d.run({});
+  EXPECT_EQ(r.end, DischargeEnd::TimeLimit);
+  ASSERT_EQ(r.outflow.size(), 1u);
+  EXPECT_NEAR(r.outflow[0].t, 0.0105, 0.0006);
+  EXPECT_EQ(r.discharged_mass, s.m);
+  EXPECT_EQ(r.remaining_mass, s.m);
+  EXPECT_EQ(s.sim->particles().size(), 1u);
+  EXPECT_EQ(r.particles_lost, 0);
+}
+
 TEST(DischargeClassification, OutsideTheConeIsLostWithItsRecord) {
   // Centre at z = 0.1 m, 4 mm (two radii) radially outside the cone, at rest: the cone face is
   // 4 cos(alpha) = 3.8 mm away behind it, beyond contact. The first check (1 ms) finds it outside
