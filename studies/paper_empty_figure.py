@@ -1,0 +1,71 @@
+"""Issue 16 c: the paper's silo (L3-I2) run to empty, from the committed runs.
+
+Reads every outlet.csv under validation/runs/paper-empty-k4/<case>/ (factor 0.111, the 12 s
+calibration) and validation/runs/paper-recal-k4/factor=<f>_seed=<s>/ (the recalibration on the
+whole-discharge mean), and draws (left) the cumulative discharged mass against time with the
+experiment's end point (30.2 kg at 90 s, PHYSICS.md 7) and its mean rate as a dashed line (the
+paper gives the experiment's rate only as that mean), (middle) the rate in 1 s bins, and (right)
+the outlet calorific value in 1 s bins. Prints one line per run: mass, time, mean rate.
+Usage: /usr/bin/python3 studies/paper_empty_figure.py [OUT.png]
+"""
+import csv
+import json
+import pathlib
+import re
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+EXP_MASS, EXP_TIME = 30.2, 90.0  # PHYSICS.md 7 (the paper, section 4.1.3)
+
+
+def runs():
+    for d in sorted((ROOT / "validation/runs/paper-empty-k4").glob("*/")):
+        if (d / "outlet.csv").exists() and d.name == "L3-I2":
+            yield "0.111 (12 s calibration), seed 1", d
+    for d in sorted((ROOT / "validation/runs/paper-recal-k4").glob("factor=*_seed=*/")):
+        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
+        if m and (d / "outlet.csv").exists():
+            yield f"{float(m.group(1)):g}, seed {m.group(2)}", d
+
+
+def main():
+    out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "docs/figures/study/paper-k4-empty.png"
+    fig, (a, b, c) = plt.subplots(1, 3, figsize=(14, 4.2))
+    a.plot([0, EXP_TIME], [0, EXP_MASS], "k--", lw=1, label="experiment's mean rate (0.335 kg/s)")
+    a.plot([EXP_TIME], [EXP_MASS], "ks", label="experiment: 30.2 kg in 90 s")
+    b.axhline(EXP_MASS / EXP_TIME, color="k", ls="--", lw=1)
+    for label, d in runs():
+        rows = list(csv.DictReader(open(d / "outlet.csv")))
+        s = json.load(open(d / "summary.json"))
+        t = [float(r["t_end_s"]) for r in rows]
+        a.plot([0] + t, [0] + [float(r["cumulative_kg"]) for r in rows], label=f"factor {label}")
+        b.step([float(r["t_start_s"]) for r in rows], [float(r["rate_kg_s"] or 0) for r in rows],
+               where="post")
+        cal = [(float(r["t_start_s"]) + 0.5, float(r["calorific_kcal_kg"])) for r in rows
+               if r["calorific_kcal_kg"] not in ("", "nan")]
+        c.plot([x for x, _ in cal], [y for _, y in cal], ".-", ms=3)
+        print(f"factor {label}: {s['discharged_mass_kg']:.3f} kg in {s['discharge_time_s']:.1f} s, "
+              f"{s['mean_rate_kg_s']:.3f} kg/s, end {s['end']}")
+    a.set_xlabel("time after the valve opens (s)")
+    a.set_ylabel("discharged mass (kg)")
+    a.set_title("L3-I2, k = 4, k_n = 1e4 N/m, one factor")
+    a.legend(fontsize=7)
+    b.set_xlabel("time after the valve opens (s)")
+    b.set_ylabel("rate in 1 s bins (kg/s)")
+    b.set_ylim(bottom=0)
+    c.set_xlabel("time after the valve opens (s)")
+    c.set_ylabel("outlet calorific value, 1 s bins (kcal/kg)")
+    for ax in (a, b, c):
+        ax.set_xlim(left=0)
+    fig.tight_layout()
+    fig.savefig(out, dpi=110)
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
