@@ -27,7 +27,7 @@ args=(calibrate "$case" --param silo.outlet_diameter_mm --target "mean_rate_kg_s
 # Killed during its first evaluations, then started again.
 "$bin" "${args[@]}" > "$work/c1.log" 2>&1 &
 pid=$!
-for _ in $(seq 1 1200); do
+for _ in $(seq 1 4800); do
   ls "$work/cal/runs/"*/checkpoint.bin > /dev/null 2>&1 && break
   sleep 0.05
 done

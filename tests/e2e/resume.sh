@@ -19,7 +19,7 @@ args=(--threads 1 --no-report --set simulation.steps_per_collision=100 --set sil
 
 # Waits until DIR/fill.csv exists (the fill is done, the discharge begins), then a little longer.
 wait_for_discharge() {
-  for _ in $(seq 1 900); do
+  for _ in $(seq 1 3600); do
     [ -f "$1/fill.csv" ] && { sleep "$2"; return 0; }
     sleep 0.1
   done
@@ -27,7 +27,7 @@ wait_for_discharge() {
 }
 # Waits until the fill has written a checkpoint (checkpoint.bin before fill.csv).
 wait_for_fill_checkpoint() {
-  for _ in $(seq 1 900); do
+  for _ in $(seq 1 3600); do
     [ -f "$1/fill.csv" ] && return 1
     [ -f "$1/checkpoint.bin" ] && return 0
     sleep 0.05

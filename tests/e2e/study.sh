@@ -47,7 +47,7 @@ grep -q "outlet_diamter_mm" "$work/bad.err" || bad "the error does not name the 
 pid=$!
 third="$work/s/runs/outlet=34.0_seed=1"
 fourth="$work/s/runs/outlet=34.0_seed=2"
-for _ in $(seq 1 1200); do  # fill.csv: the fill is done; the discharge's checkpoint follows
+for _ in $(seq 1 4800); do  # fill.csv: the fill is done; the discharge's checkpoint follows
   [ -f "$third/fill.csv" ] && sleep 0.3 && break
   sleep 0.05
 done
@@ -64,7 +64,7 @@ stat -c '%Y %i' "$work/s/runs/outlet=30.0_seed="{1,2}/summary.json > "$work/befo
 # 2. Start again, and kill it while the fourth run is in its fill.
 "$bin" study "$work/study.toml" --out "$work/s" --threads 1 --jobs 1 > "$work/s2.log" 2>&1 &
 pid=$!
-for _ in $(seq 1 1200); do
+for _ in $(seq 1 4800); do
   [ -f "$fourth/summary.json" ] && [ ! -f "$fourth/fill.csv" ] && break
   sleep 0.05
 done
@@ -77,7 +77,7 @@ grep -q '"complete" : true' "$third/summary.json" || bad "the third run was not 
 # 3. Start again with two runs side by side; SIGTERM stops it with the children checkpointed.
 "$bin" study "$work/study.toml" --out "$work/s" --threads 2 --jobs 2 > "$work/s3.log" 2>&1 &
 pid=$!
-for _ in $(seq 1 1200); do
+for _ in $(seq 1 4800); do
   ls "$work/s/runs/"*/checkpoint.bin > /dev/null 2>&1 && break
   sleep 0.05
 done
