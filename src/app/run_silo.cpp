@@ -5,6 +5,7 @@
 // SIGINT/SIGTERM; `--resume DIR` continues from DIR/checkpoint.bin bit for bit.
 #include <fmt/format.h>
 #include <toml++/toml.h>
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <csignal>
@@ -314,7 +315,11 @@ class SiloRun {
     const DischargeResult& d = dis_result_;
     std::vector<double> q;
     for (const auto& coal : c_.coals) q.push_back(coal.heating_value);
-    const std::vector<OutletBin> bins = outlet_bins(d.outflow, c_.discharge.bin, d.end_time, q);
+    // A time-limited run's last check lands just after max_time: its bins end at max_time (what
+    // was in flight then is booked at max_time at the latest), not in a sliver bin after it.
+    const double bins_end =
+        d.end == DischargeEnd::TimeLimit ? std::min(d.end_time, c_.discharge.max_time) : d.end_time;
+    const std::vector<OutletBin> bins = outlet_bins(d.outflow, c_.discharge.bin, bins_end, q);
     write_outlet_csv(out_ / "outlet.csv", c_, bins);
     write_lost_csv(out_ / "lost.csv", c_, d.lost);
     observers_->finish();

@@ -69,13 +69,7 @@ void Discharge::add_lost(double t, std::size_t i, LostReason why, double crossin
 void Discharge::check(double t, std::vector<std::size_t>& remove) {
   auto& p = sim_.particles();
   remove.clear();
-  auto discharged = [&](std::size_t i, double t_out) {
-    r_.outflow.push_back({t_out, p.material[i], p.mass[i]});
-    r_.discharged_mass += p.mass[i];
-    bin_mass_ += p.mass[i];
-    last_out_ = t;
-    remove.push_back(i);
-  };
+  auto discharged = [&](std::size_t i, double t_out) { book_out(t, i, t_out, remove); };
   for (std::size_t i = 0; i < p.size(); ++i) {
     const double z = p.x[i].z;
     const double r_xy = std::hypot(p.x[i].x, p.x[i].y);
@@ -117,18 +111,33 @@ void Discharge::check(double t, std::vector<std::size_t>& remove) {
   sim_.remove_particles(remove);
 }
 
-void Discharge::book_in_flight(std::vector<std::size_t>& remove) {
+void Discharge::book_out(double t, std::size_t i, double t_out, std::vector<std::size_t>& remove) {
+  const auto& p = sim_.particles();
+  r_.outflow.push_back({t_out, p.material[i], p.mass[i]});
+  r_.discharged_mass += p.mass[i];
+  bin_mass_ += p.mass[i];
+  last_out_ = t;
+  remove.push_back(i);
+}
+
+void Discharge::book_in_flight(double t, double t_cap, std::vector<std::size_t>& remove) {
   auto& p = sim_.particles();
   remove.clear();
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (p.x[i].z >= 0.0) continue;
     const auto c = crossed_.find(p.id[i]);  // check() has just classified every centre below 0
-    if (c == crossed_.end() || c->second.t < 0.0) continue;
-    r_.outflow.push_back({c->second.t, p.material[i], p.mass[i]});
-    r_.discharged_mass += p.mass[i];
-    remove.push_back(i);
+    if (c == crossed_.end()) continue;
+    if (c->second.t < 0.0) {
+      // Crossed outside the outlet, past the rim: lost, as the sink would have found it.
+      add_lost(t, i, LostReason::BelowOutsideOutlet, c->second.r);
+      remove.push_back(i);
+    } else if (p.x[i].z < -p.radius[i] && p.v[i].z < 0.0) {
+      // Wholly below the outlet plane and moving down: it has left the silo. One still within a
+      // radius of the plane, or not moving down, may hang from the bed and stays in the silo.
+      book_out(t, i, std::min(c->second.t, t_cap), remove);
+    }
   }
-  for (std::size_t i : remove) crossed_.erase(p.id[i]);
+  for (std::size_t i : remove) crossed_.erase(p.id[i]), entered_.erase(p.id[i]);
   sim_.remove_particles(remove);
 }
 
@@ -168,6 +177,7 @@ DischargeResult Discharge::run(const DischargeProgress& progress, const Discharg
       st.lost = r_.lost_mass;
       if (progress) progress(st);
       if (r_.discharged_mass >= spec_.target_fraction * r_.filled_mass || p.size() == 0) {
+        book_in_flight(t, std::numeric_limits<double>::infinity(), remove);
         r_.end = DischargeEnd::Emptied;
         break;
       }
@@ -176,7 +186,9 @@ DischargeResult Discharge::run(const DischargeProgress& progress, const Discharg
         break;
       }
       if (t >= spec_.max_time) {
-        book_in_flight(remove);
+        // The last check is at or just after max_time: what it first saw below the plane is booked
+        // at max_time, in the last bin, not in a sliver bin after it.
+        book_in_flight(t, spec_.max_time, remove);
         r_.end = DischargeEnd::TimeLimit;
         break;
       }

@@ -37,7 +37,8 @@ struct OutletRecord {
 enum class LostReason : std::uint8_t {
   OutsideWall,         // above z = 0, radially outside the wall by more than its radius
   AboveSilo,           // more than 0.5 m above the silo top
-  BelowOutsideOutlet,  // reached the sink after its centre crossed z = 0 outside the outlet
+  BelowOutsideOutlet,  // below z = 0 at the sink or at the end, having crossed it outside the
+                       // outlet
 };
 const char* lost_reason_name(LostReason r);  // "outside_wall", "above_silo", ...
 
@@ -110,8 +111,12 @@ class Discharge {
   DischargeResult finish(DischargeResult r) const;
   void note_crossings();  // after every step: where centres first go below z = 0
   void check(double t, std::vector<std::size_t>& remove);
-  // At the time limit: what went out through the outlet and is still falling to the sink.
-  void book_in_flight(std::vector<std::size_t>& remove);
+  // Books particle i as discharged at t_out (its crossing time), noted at check time t.
+  void book_out(double t, std::size_t i, double t_out, std::vector<std::size_t>& remove);
+  // At the end (emptied or time limit), what is between the outlet plane and the sink: what
+  // went out through the outlet and is falling is discharged at its crossing time (at most
+  // t_cap), what crossed outside the outlet is lost.
+  void book_in_flight(double t, double t_cap, std::vector<std::size_t>& remove);
   void add_lost(double t, std::size_t i, LostReason why, double crossing_r);
 
   Simulation& sim_;

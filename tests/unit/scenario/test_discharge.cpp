@@ -89,6 +89,72 @@ TEST(DischargeClassification, AtTheTimeLimitWhatIsFallingToTheSinkIsDischarged) 
   EXPECT_EQ(r.particles_lost, 0);
 }
 
+TEST(DischargeClassification, AtTheTimeLimitTheLastCheckBooksAtMaxTime) {
+  // max_time 100.5 ms lies between two checks, so the last check is at 101 ms. From z = 502.5 mm
+  // on the axis at -5 m/s the centre crosses z = 0 at 100.5 ms and is at -2.5 mm (wholly below the
+  // plane) at 101 ms, the first check to see it below. It is booked at max_time, not at 101 ms,
+  // so that the outlet bins end at max_time without a sliver bin after it.
+  Silo s;
+  s.add({0, 0, 0.5025}, {0, 0, -5.0});
+  DischargeSpec sp = spec();
+  sp.max_time = 0.1005;
+  Discharge d(*s.sim, s.g, s.valve, sp);
+  d.open();
+  const DischargeResult r = d.run({});
+  EXPECT_EQ(r.end, DischargeEnd::TimeLimit);
+  EXPECT_NEAR(r.end_time, 0.101, 1e-9);
+  ASSERT_EQ(r.outflow.size(), 1u);
+  EXPECT_EQ(r.outflow[0].t, 0.1005);
+  EXPECT_EQ(r.discharged_mass, s.m);
+}
+
+TEST(DischargeClassification, AtTheEndWhatHangsAtTheOutletStaysAndWhatCrossedOutsideIsLost) {
+  // At the time limit (100 ms), gravity off: a sphere at rest 1 mm below the outlet plane on the
+  // axis (within a radius of the plane, not moving down: it may hang from the bed) stays in the
+  // silo. A sphere from (40, 0, -1) mm at -0.1 m/s crossed z = 0 outside the 25 mm outlet (first
+  // seen below it at r = 40 mm > 25 + 2 mm) and is at -11 mm, above the sink (-20 mm), at the end:
+  // lost below the outlet, as the sink would have found it, not discharged.
+  Silo s;
+  s.add({0, 0, -0.001}, {});
+  s.add({0.040, 0, -0.001}, {0, 0, -0.1});
+  Discharge d(*s.sim, s.g, s.valve, spec());
+  d.open();
+  const DischargeResult r = d.run({});
+  EXPECT_EQ(r.end, DischargeEnd::TimeLimit);
+  EXPECT_TRUE(r.outflow.empty());
+  EXPECT_EQ(r.discharged_mass, 0.0);
+  ASSERT_EQ(r.lost.size(), 1u);
+  EXPECT_EQ(r.lost[0].reason, LostReason::BelowOutsideOutlet);
+  EXPECT_NEAR(r.lost[0].x.x, 0.040, 1e-12);
+  EXPECT_NEAR(r.lost[0].x.z, -0.011, 2e-4);
+  EXPECT_EQ(r.remaining_mass, s.m);
+  EXPECT_EQ(s.sim->particles().size(), 1u);
+  EXPECT_NEAR(r.filled_mass - (r.remaining_mass + r.discharged_mass + r.lost_mass), 0.0, 1e-18);
+}
+
+TEST(DischargeClassification, WhenEmptiedWhatIsFallingToTheSinkIsDischarged) {
+  // target_fraction 0.5 of two spheres, gravity off. A from (0, 0, 1) mm at -1 m/s crosses at 1 ms
+  // and reaches the sink (-20 mm) at 21 ms: removed at the check at 22 ms, which empties the silo
+  // to the target. B from (10, 0, 1) mm at -0.2 m/s crossed inside the outlet at 5 ms and is at
+  // -3.4 mm then, falling: it has left the silo and is booked at its crossing (the check at 5 or 6
+  // ms), not left in the silo as undischarged.
+  Silo s;
+  s.add({0, 0, 0.001}, {0, 0, -1.0});
+  s.add({0.010, 0, 0.001}, {0, 0, -0.2});
+  DischargeSpec sp = spec();
+  sp.target_fraction = 0.5;
+  Discharge d(*s.sim, s.g, s.valve, sp);
+  d.open();
+  const DischargeResult r = d.run({});
+  EXPECT_EQ(r.end, DischargeEnd::Emptied);
+  EXPECT_NEAR(r.end_time, 0.022, 1e-9);
+  ASSERT_EQ(r.outflow.size(), 2u);
+  EXPECT_NEAR(r.outflow[0].t, 0.0015, 0.0006);
+  EXPECT_NEAR(r.outflow[1].t, 0.0055, 0.0006);
+  EXPECT_EQ(r.discharged_mass, 2 * s.m);
+  EXPECT_EQ(r.remaining_mass, 0.0);
+}
+
 TEST(DischargeClassification, OutsideTheConeIsLostWithItsRecord) {
   // Centre at z = 0.1 m, 4 mm (two radii) radially outside the cone, at rest: the cone face is
   // 4 cos(alpha) = 3.8 mm away behind it, beyond contact. The first check (1 ms) finds it outside
