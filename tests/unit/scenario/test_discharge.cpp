@@ -14,7 +14,6 @@
 namespace silodem {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kR = 2e-3;          // sphere radius (m)
 constexpr double kDt = 1e-3 / 64;    // 1e-3 / kDt is exactly 64: a check every 64 steps = 1 ms
 constexpr double kCheck = 64 * kDt;  // = 1e-3 s
