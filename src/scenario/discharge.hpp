@@ -7,8 +7,9 @@
 // outlet plane outside the outlet, are removed and counted as lost, each with a record (lost.csv).
 // A particle that left through the outlet and then came back up outside the cone, round the rim
 // (a cohesive particle can swing round the rim edge), has left the silo: it is removed there and
-// counted as discharged. A run stopped by `max_time` books the particles still falling between
-// the outlet and the sink at their crossing times, as the sink would have. Ends when the target
+// counted as discharged. A run that empties or reaches `max_time` books the particles still
+// falling between the outlet and the sink at their crossing times, as the sink would have
+// (docs/models/silo.md). Ends when the target
 // fraction has left or the silo is empty, when
 // nothing has left for `stall_time` (a stopped flow: arching, reported as such; the clock starts
 // once a particle could have reached the sink), at `max_time`, or on a simulation error (the
