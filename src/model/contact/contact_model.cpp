@@ -71,7 +71,9 @@ ContactSpec spec_for(const ContactSpec& spec, int a, int b) {
     std::map<std::string, SourcePlace> places;
     for (const ParamValues* over : {va, vb}) {
       if (!over) continue;
-      for (const auto& [key, x] : over->numbers) {
+      // Not a structured binding: clang 14 cannot capture one in the lambda below.
+      for (const auto& entry : over->numbers) {
+        const std::string& key = entry.first;
         if (merged.count(key)) continue;
         auto value = [&](const ParamValues* o) {
           if (o) {
