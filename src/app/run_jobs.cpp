@@ -12,6 +12,7 @@
 #include <atomic>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
@@ -22,6 +23,7 @@
 
 #include "app/commands.hpp"
 #include "core/error.hpp"
+#include "io/run_progress.hpp"
 
 extern char** environ;
 
@@ -101,6 +103,16 @@ pid_t start_child(std::vector<std::string> args, std::vector<std::string> env,
   return pid;
 }
 
+// The wall time a finished run used over all its sessions (summary.json), or `fallback`.
+double run_wall_time(const fs::path& dir, double fallback) {
+  try {
+    const double w = read_run_metrics(dir).wall_time_s;
+    return std::isfinite(w) ? w : fallback;
+  } catch (const std::exception&) {
+    return fallback;
+  }
+}
+
 // The last non-empty line of a log (for an error message).
 std::string last_line(const fs::path& log) {
   std::ifstream in(log);
@@ -164,18 +176,20 @@ std::vector<JobOutcome> JobRunner::run(
   std::vector<JobOutcome> out(jobs.size());
   std::deque<std::size_t> pending;
   std::size_t done = 0;
+  double wall_sum = 0.0;  // of the finished runs, for the ETA
+  int timed = 0;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     out[i].state = run_state(jobs[i].dir);
     if (out[i].state == RunState::Finished || out[i].state == RunState::Failed) {
       ++done;
+      const double w = run_wall_time(jobs[i].dir, std::nan(""));
+      if (std::isfinite(w)) wall_sum += w, ++timed;
       on_done(i);
     } else {
       pending.push_back(i);
     }
   }
   std::map<pid_t, Child> running;
-  double wall_sum = 0.0;
-  int timed = 0;
   bool forwarded = false;
   std::string input_error;
   auto last_status = Clock::now() - std::chrono::seconds(10);
@@ -221,7 +235,8 @@ std::vector<JobOutcome> JobRunner::run(
                                     (log_dir_ / (jobs[i].name + ".log")).string());
         if (out[i].state == RunState::Finished || out[i].state == RunState::Failed) {
           ++done;
-          wall_sum += std::chrono::duration<double>(Clock::now() - c.start).count();
+          wall_sum += run_wall_time(jobs[i].dir,
+                                    std::chrono::duration<double>(Clock::now() - c.start).count());
           ++timed;
           on_done(i);
         }
@@ -232,8 +247,24 @@ std::vector<JobOutcome> JobRunner::run(
       }
       if (Clock::now() - last_status > std::chrono::seconds(1)) {
         last_status = Clock::now();
-        const double left = double(pending.size()) + 0.5 * double(running.size());
-        status(done, running.size(), timed > 0 ? wall_sum / timed * left / jobs_ : -1.0);
+        std::vector<double> left, elapsed, totals;
+        for (const auto& [child_pid, c] : running) {
+          const auto p = read_run_progress(jobs[c.job].dir);
+          const double eta = p ? p->eta_s : std::nan("");
+          left.push_back(eta);
+          elapsed.push_back(p && std::isfinite(p->wall_s)
+                                ? p->wall_s
+                                : std::chrono::duration<double>(Clock::now() - c.start).count());
+          if (std::isfinite(eta)) totals.push_back(elapsed.back() + eta);
+        }
+        double mean_run = std::nan("");
+        if (timed > 0) {
+          mean_run = wall_sum / timed;
+        } else if (!totals.empty()) {
+          mean_run = 0.0;
+          for (double x : totals) mean_run += x / double(totals.size());
+        }
+        status(done, running.size(), runs_eta(left, elapsed, pending.size(), mean_run, jobs_));
       }
     }
   } catch (...) {

@@ -39,10 +39,12 @@ class JobRunner {
   static void lock(const std::filesystem::path& dir);
 
   // Runs the jobs that are not finished, at most `jobs` at a time. `on_done(i)` is called after
-  // job i ends (or at once if it was already finished). `status(done, running, names)` is called
-  // about every second for a progress line. Returns the outcomes; stops early (children sent
-  // SIGTERM, so they checkpoint) if SIGINT or SIGTERM arrives: then interrupted() is true.
-  // A child that exits 2 (bad input) ends the runner with an InputError.
+  // job i ends (or at once if it was already finished). `status(done, running, eta_s)` is called
+  // about every second for a progress line; eta_s (-1: unknown) comes from runs_eta, with each
+  // running run's own estimate from its progress.json and the mean wall time of the runs
+  // finished here (before any has, of the running runs' estimated totals). Returns the outcomes;
+  // stops early (children sent SIGTERM, so they checkpoint) if SIGINT or SIGTERM arrives: then
+  // interrupted() is true. A child that exits 2 (bad input) ends the runner with an InputError.
   std::vector<JobOutcome> run(
       const std::vector<RunJob>& jobs, const std::function<void(std::size_t)>& on_done,
       const std::function<void(std::size_t done, std::size_t running, double eta_s)>& status);

@@ -11,6 +11,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string_view>
 
@@ -22,6 +23,7 @@
 #include "io/csv.hpp"
 #include "io/run_dir.hpp"
 #include "io/run_metrics.hpp"
+#include "io/run_progress.hpp"
 #include "scenario/discharge.hpp"
 #include "scenario/layered_filling.hpp"
 #include "scenario/outlet_stats.hpp"
@@ -200,6 +202,10 @@ class SiloRun {
           [&](const std::string& s) {
             progress_.show(fmt::format("fill {}  particles {}  wall {:.0f} s", s,
                                        sim_->particles().size(), wall()));
+            RunProgress p;
+            p.phase = "fill";
+            p.wall_s = wall();
+            note_progress(p);
           },
           fill_checkpoint, from);
     } catch (const InterruptedFill&) {
@@ -215,6 +221,7 @@ class SiloRun {
       progress_.finish();
       error_ = e.what();
       write_summary("error during the fill");
+      remove_run_progress(out_);
       fmt::print(stderr, "simulation error: {}\n", error_);
       return kExitSimulation;
     }
@@ -277,11 +284,21 @@ class SiloRun {
             const double frac = s.discharged / std::max(s.filled, 1e-30);
             const double to_go =
                 std::max(0.0, c_.discharge.target_fraction * s.filled - s.discharged);
-            std::string eta = "?";
+            // Unknown while nothing flows; a run with a time limit ends there at the latest.
+            double eta_s = std::numeric_limits<double>::quiet_NaN();
             if (s.recent_rate > 0 && wall_per_s > 0)
-              eta = fmt::format("{:.0f} s", to_go / s.recent_rate * wall_per_s);
+              eta_s = wall_per_s *
+                      std::min(to_go / s.recent_rate, std::max(0.0, c_.discharge.max_time - s.t));
+            std::string eta = "?";
+            if (std::isfinite(eta_s))
+              eta = fmt::format("{:.0f} s", eta_s);
             else if (wall_per_s > 0)
               eta = "? (no outflow now)";
+            RunProgress p;
+            p.phase = "discharge";
+            p.t_s = s.t, p.discharged_kg = s.discharged, p.fraction = frac;
+            p.rate_kg_s = s.recent_rate, p.wall_s = now, p.eta_s = eta_s;
+            note_progress(p);
             progress_.show(fmt::format(
                 "discharge t = {:.2f} s  particles left {}  out {:.3f} kg ({:.1f}%)  "
                 "rate {:.3f} kg/s  wall {:.0f} s  ETA {}",
@@ -335,6 +352,7 @@ class SiloRun {
                                                      : "time limit";
     toml::table summary = summary_table(end, bins);
     write_text(out_ / "summary.json", to_json(summary));
+    remove_run_progress(out_);  // the run has its result
     // Complete: nothing to resume. After an error the last good checkpoint stays (resume it
     // with --force after changing what caused the error, e.g. a smaller time step).
     if (error_.empty()) RunDir(out_).remove_checkpoint();
@@ -354,6 +372,13 @@ class SiloRun {
     if (o_.report) report_command(out_.string(), true);
     // A stopped flow is a result, not a success: the silo did not empty.
     return d.end == DischargeEnd::Emptied ? kExitOk : kExitNotEmptied;
+  }
+
+  // progress.json (io/run_progress.hpp), at most every few seconds of wall time.
+  void note_progress(const RunProgress& p) {
+    if (wall() - progress_written_ < 5.0) return;
+    write_run_progress(out_, p);
+    progress_written_ = wall();
   }
 
   // summary.json before the end: complete = false, so a killed run never looks finished.
@@ -453,6 +478,8 @@ class SiloRun {
   std::string error_;
   ProgressLine progress_;
   double wall_before_ = 0.0;
+  double progress_written_ =
+      -std::numeric_limits<double>::infinity();  // wall() when progress.json was last written
   std::uint64_t case_hash_ = 0;
 };
 

@@ -88,6 +88,8 @@ rc=$?
 grep -q "study interrupted" "$work/s3.log" || bad "no message on SIGTERM: $(tail -2 "$work/s3.log")"
 grep -l '"end" : "interrupted' "$work/s/runs/"*/summary.json > /dev/null ||
   bad "no run says it was interrupted after the SIGTERM"
+ls "$work/s/runs/"*/progress.json > /dev/null 2>&1 ||
+  bad "no interrupted run left its progress.json (where it stopped)"
 
 # 4. Start again: it ends.
 "$bin" study "$work/study.toml" --out "$work/s" --threads 2 --jobs 2 > "$work/s4.log" 2>&1 ||
@@ -100,6 +102,10 @@ grep -q "resumed at t = " "$work/s/logs/outlet=34.0_seed=1.log" ||
   [ "$(grep -c 'resumed at t = ' "$work/s/logs/outlet=34.0_seed=2.log")" -le 1 ] ||
   bad "the run killed in its fill: $(cat "$work/s/logs/outlet=34.0_seed=2.log" | grep -v discharge | tail -5)"
 grep -q "runs done" "$work/s4.log" || bad "no progress line"
+# Runs finished before this start give the mean run time at once: the first line has an ETA.
+grep -m1 "runs done" "$work/s4.log" | grep -q "ETA [0-9][0-9]* s" ||
+  bad "the continued study's first progress line has no ETA: $(grep -m1 "runs done" "$work/s4.log")"
+if ls "$work/s/runs/"*/progress.json > /dev/null 2>&1; then bad "a finished run kept its progress.json"; fi
 
 # The killed and resumed run equals the same run made at once.
 "$bin" run "$src/tests/data/small_silo.toml" --out "$work/ref" --threads 1 --no-report \
