@@ -35,6 +35,7 @@ struct StudyOptions {
   int threads = 0;       // in all (0: every core)
   int jobs = 1;          // runs side by side, sharing the threads
   bool dry_run = false;  // check every run's case and list the runs; run nothing
+  bool status = false;   // list the runs with their result or where they are; run nothing
 };
 
 struct CalibrateOptions {

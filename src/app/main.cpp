@@ -118,6 +118,9 @@ int main(int argc, char** argv) {
   study_cmd->add_flag("--dry-run", study.dry_run,
                       "check every run's case and list the runs with their --set values; run "
                       "nothing, write nothing");
+  study_cmd->add_flag("--status", study.status,
+                      "list the runs: a finished one with its result, an unfinished one with "
+                      "where it is (its progress.json); run nothing, write nothing");
   study_cmd->add_option("--jobs", study.jobs, "runs side by side, sharing the threads (default 1)")
       ->check(CLI::Range(1, 256));
 

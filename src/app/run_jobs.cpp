@@ -167,6 +167,15 @@ void JobRunner::lock(const fs::path& dir) {
   }
 }
 
+bool JobRunner::locked(const fs::path& dir) {
+  const fs::path file = dir / ".lock";
+  const int fd = open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = flock(fd, LOCK_EX | LOCK_NB) != 0;  // released by the close if we got it
+  close(fd);
+  return held;
+}
+
 std::vector<JobOutcome> JobRunner::run(
     const std::vector<RunJob>& jobs, const std::function<void(std::size_t)>& on_done,
     const std::function<void(std::size_t, std::size_t, double)>& status) {

@@ -37,6 +37,8 @@ class JobRunner {
 
   // Takes a lock on `dir` (DIR/.lock), refusing with an InputError if another process holds it.
   static void lock(const std::filesystem::path& dir);
+  // Whether another process holds that lock now (a study or calibration is running in `dir`).
+  static bool locked(const std::filesystem::path& dir);
 
   // Runs the jobs that are not finished, at most `jobs` at a time. `on_done(i)` is called after
   // job i ends (or at once if it was already finished). `status(done, running, eta_s)` is called

@@ -19,6 +19,7 @@
 #include "app/run_common.hpp"
 #include "core/error.hpp"
 #include "io/config/load.hpp"
+#include "io/run_progress.hpp"
 
 namespace fs = std::filesystem;
 
@@ -387,6 +388,43 @@ std::vector<std::vector<std::size_t>> grid(const Study& s) {
   return pts;
 }
 
+// `study --status`: each run's state, with its result (summary.json) or where it is
+// (progress.json), and whether a study is running in `out` now.
+void print_status(const std::vector<RunJob>& jobs, const fs::path& out, double t0, double t1) {
+  std::size_t width = 0, finished = 0;
+  for (const auto& j : jobs) width = std::max(width, j.name.size());
+  for (const auto& j : jobs) {
+    const RunState st = run_state(j.dir);
+    std::string what;
+    if (st == RunState::Finished || st == RunState::Failed) {
+      ++finished;
+      try {
+        const RunMetrics m = read_run_metrics(j.dir, t0, t1);
+        what = fmt::format("{}: {:.3f} kg out in {:.2f} s (mean {:.3f} kg/s), wall {:.0f} s",
+                           m.error.empty() ? m.end : m.error, m.discharged_mass_kg,
+                           m.discharge_time_s, m.mean_rate_kg_s, m.wall_time_s);
+      } catch (const std::exception& e) {
+        what = e.what();
+      }
+    } else if (const auto p = read_run_progress(j.dir)) {
+      const std::string eta = std::isfinite(p->eta_s) ? fmt::format("{:.0f} s", p->eta_s) : "?";
+      what = p->phase == "discharge"
+                 ? fmt::format(
+                       "discharge t = {:.2f} s, {:.3f} kg out ({:.1f}%), {:.3f} kg/s, "
+                       "wall {:.0f} s, ETA {} (as of {})",
+                       p->t_s, p->discharged_kg, 100 * p->fraction, p->rate_kg_s, p->wall_s, eta,
+                       p->updated)
+                 : fmt::format("{}, wall {:.0f} s (as of {})", p->phase, p->wall_s, p->updated);
+    } else if (st != RunState::Absent) {
+      what = "no progress.json (not written yet, or a run of a silodem before 2026-12-04)";
+    }
+    fmt::print("{:<{}}  {:<9}  {}\n", j.name, width, to_string(st), what);
+  }
+  fmt::print("{} of {} runs done; {}\n", finished, jobs.size(),
+             JobRunner::locked(out) ? "a study is running in " + out.string()
+                                    : "nothing is running in " + out.string());
+}
+
 }  // namespace
 
 int study_command(const StudyOptions& o) {
@@ -438,6 +476,10 @@ int study_command(const StudyOptions& o) {
     } catch (const InputError& e) {
       throw InputError({o.study_path, 0, 0}, "", fmt::format("run {}: {}", j.name, e.what()));
     }
+  }
+  if (o.status) {
+    print_status(jobs, out, s.window_t0, s.window_t1);
+    return kExitOk;
   }
   if (o.dry_run) {
     for (const auto& j : jobs) {

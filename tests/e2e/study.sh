@@ -90,6 +90,11 @@ grep -l '"end" : "interrupted' "$work/s/runs/"*/summary.json > /dev/null ||
   bad "no run says it was interrupted after the SIGTERM"
 ls "$work/s/runs/"*/progress.json > /dev/null 2>&1 ||
   bad "no interrupted run left its progress.json (where it stopped)"
+"$bin" study "$work/study.toml" --out "$work/s" --status > "$work/status3.txt" 2>&1 ||
+  bad "--status exited $?"
+grep -Eq "resumable +(discharge t = [0-9.]+ s, [0-9.]+ kg out|fill)" "$work/status3.txt" &&
+  grep -q "nothing is running in" "$work/status3.txt" ||
+  bad "--status of the interrupted study: $(cat "$work/status3.txt")"
 
 # 4. Start again: it ends.
 "$bin" study "$work/study.toml" --out "$work/s" --threads 2 --jobs 2 > "$work/s4.log" 2>&1 ||
@@ -106,6 +111,9 @@ grep -q "runs done" "$work/s4.log" || bad "no progress line"
 grep -m1 "runs done" "$work/s4.log" | grep -q "ETA [0-9][0-9]* s" ||
   bad "the continued study's first progress line has no ETA: $(grep -m1 "runs done" "$work/s4.log")"
 if ls "$work/s/runs/"*/progress.json > /dev/null 2>&1; then bad "a finished run kept its progress.json"; fi
+"$bin" study "$work/study.toml" --out "$work/s" --status > "$work/status4.txt" 2>&1
+[ "$(grep -c "finished  .*: [0-9.]* kg out in" "$work/status4.txt")" -eq 6 ] &&
+  grep -q "^6 of 6 runs done" "$work/status4.txt" || bad "--status of the finished study: $(cat "$work/status4.txt")"
 
 # The killed and resumed run equals the same run made at once.
 "$bin" run "$src/tests/data/small_silo.toml" --out "$work/ref" --threads 1 --no-report \
