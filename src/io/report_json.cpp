@@ -54,6 +54,7 @@ std::string case_report_json(const Case& c, const CaseReport& r) {
     materials.push_back(toml::table{
         {"name", m.name},
         {"porosity", m.measured.porosity},
+        {"rumpf_porosity", m.measured.rumpf_porosity},
         {"tensile_strength_pa", m.measured.tensile_strength},
         {"cohesion_force_n", m.measured.cohesion_force},
         {"cohesion_force_cg_n", m.cohesion_cg},
@@ -119,6 +120,9 @@ std::string case_report_text(const Case& c, const CaseReport& r) {
   for (const auto& m : r.coals) {
     s += fmt::format("coal {}\n", m.name);
     s += fmt::format("  porosity (Eq. 15)            {:.4f}\n", m.measured.porosity);
+    if (m.measured.rumpf_porosity != m.measured.porosity)
+      s += fmt::format("  porosity in Eq. 14           {:.4f} (coarse_graining.rumpf_porosity)\n",
+                       m.measured.rumpf_porosity);
     s += fmt::format("  tensile strength (Eq. 16)    {:.1f} Pa\n", m.measured.tensile_strength);
     s += fmt::format("  F_L (Eq. 14)                 {:.4e} N   Bond number {:.2f}\n",
                      m.measured.cohesion_force, m.measured.bond_number);

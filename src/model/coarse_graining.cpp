@@ -111,6 +111,13 @@ const std::vector<Bound<CoarseGraining>>& coarse_graining_fields() {
               }),
       bind(F::number("restitution_floor", "e_min for energy-clamped").above(0).at_most(1),
            &S::restitution_floor),
+      bind(F::number("rumpf_porosity",
+                     "eps in Eq. 14 (F_L = d_sv^2 sigma_t eps / (1 - eps)) for every coal: the "
+                     "porosity of the packing whose tensile strength the contacts must give; 0 = "
+                     "each coal's Eq. 15 from its measured densities (the paper)")
+               .at_least(0)
+               .at_most(0.9),
+           &S::rumpf_porosity),
   };
   return b;
 }

@@ -23,6 +23,10 @@ struct CoarseGraining {
   double cohesion_exponent = 3.0;  // F_L,cg = k^alpha F_L; 3 = paper (Bond number), 2 = Rumpf
   RestitutionPolicy restitution_policy = RestitutionPolicy::None;
   double restitution_floor = 0.01;  // e_min for EnergyClamped
+  // eps in Eq. 14 for every coal; 0 = each coal's Eq. 15 (its measured packing, the paper's).
+  // Rumpf's relation ties the bulk tensile strength to the contact force through the porosity of
+  // the packing that carries it; a DEM bed that packs otherwise than the coal needs its own.
+  double rumpf_porosity = 0.0;
 
   double diameter(double d) const { return k * d; }      // Eq. 2
   double mass(double m) const { return k * k * k * m; }  // Eq. 1

@@ -23,16 +23,17 @@ double sphere_mass(double diameter, double density) {
   return kPi / 6.0 * diameter * diameter * diameter * density;
 }
 
-CoalDerived derive(const CoalProperties& c) {
+CoalDerived derive(const CoalProperties& c, double rumpf_porosity) {
   CoalDerived d;
   // Without the measured properties (cohesion_force_n given instead) Eq. 15-16 are not defined.
   const bool measured = c.bulk_density > 0.0 && c.friction_angle > 0.0;
   d.porosity = measured ? porosity(c.bulk_density, c.true_density, c.moisture) : 0.0;
   d.tensile_strength = measured ? tensile_strength(c.cohesion, c.friction_angle) : 0.0;
+  d.rumpf_porosity = rumpf_porosity > 0.0 ? rumpf_porosity : d.porosity;
   d.cohesion_force =
       c.cohesion_force_override
           ? *c.cohesion_force_override
-          : moisture_cohesion_force(c.sauter_diameter, d.tensile_strength, d.porosity);
+          : moisture_cohesion_force(c.sauter_diameter, d.tensile_strength, d.rumpf_porosity);
   d.particle_mass = sphere_mass(c.diameter, c.true_density);
   d.bond_number = d.cohesion_force / (d.particle_mass * kGravity);
   return d;

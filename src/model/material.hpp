@@ -31,7 +31,8 @@ struct CoalProperties {
 };
 
 struct CoalDerived {
-  double porosity = 0.0;          // eps, Eq. 15
+  double porosity = 0.0;          // eps, Eq. 15 (the measured packing)
+  double rumpf_porosity = 0.0;    // eps used in Eq. 14: Eq. 15's, or the case's rumpf_porosity
   double tensile_strength = 0.0;  // sigma_t = C / tan(phi), Pa, Eq. 16
   double cohesion_force = 0.0;    // F_L, N, Eq. 14 (original particle)
   double particle_mass = 0.0;     // kg, sphere of `diameter` at the true density
@@ -46,7 +47,9 @@ double tensile_strength(double cohesion, double friction_angle);
 double moisture_cohesion_force(double sauter_diameter, double sigma_t, double eps);
 double sphere_mass(double diameter, double density);
 
-CoalDerived derive(const CoalProperties& coal);
+// `rumpf_porosity` > 0 replaces Eq. 15's porosity in Eq. 14 (coarse_graining.rumpf_porosity:
+// the porosity of the packing whose bulk tensile strength F_L must give); 0 keeps Eq. 15's.
+CoalDerived derive(const CoalProperties& coal, double rumpf_porosity = 0.0);
 
 // The [[coal]] keys, bound to CoalProperties' members. `symbol` and the sieve lists are read by the
 // loader (the symbols of all coals and the size classes are checked together); a measured input

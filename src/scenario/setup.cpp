@@ -49,7 +49,7 @@ CaseReport derive_case(const ScenarioCase& c, ContactModel* model_out) {
   for (const auto& coal : c.coals) {
     CoalReport cr;
     cr.name = coal.name;
-    cr.measured = derive(coal);
+    cr.measured = derive(coal, c.cg.rumpf_porosity);
     cr.cg_diameter = c.cg.diameter(coal.diameter);
     cr.cg_mass = c.cg.mass(cr.measured.particle_mass);
     cr.cohesion_cg = c.cg.cohesion_force(cr.measured.cohesion_force);

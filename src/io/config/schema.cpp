@@ -46,8 +46,10 @@ const std::vector<Bound<OutputSpec>>& output_fields() {
 const std::vector<Section>& sections() {
   static const std::vector<Section> s = {
       {"simulation", "time stepping and global settings", false, fields_of(time_fields())},
-      {"coarse_graining", "coarse-graining factor and scaling policies (PHYSICS.md 1)", false,
-       fields_of(coarse_graining_fields())},
+      {"coarse_graining",
+       "coarse-graining factor and scaling policies, and the porosity that turns the measured "
+       "tensile strength into a contact force (PHYSICS.md 1, 3)",
+       false, fields_of(coarse_graining_fields())},
       {"coal", "a coal (or any granular material): measured properties (PHYSICS.md 4)", true,
        fields_of(coal_fields())},
       {"silo",

@@ -70,6 +70,23 @@ TEST(Material, SauterDiameterIsItsOwnInput) {
   EXPECT_DOUBLE_EQ(derive(c).particle_mass, derive(longwanggou()).particle_mass);
 }
 
+TEST(Material, RumpfPorosityReplacesEq15InEq14Only) {
+  // coarse_graining.rumpf_porosity: Eq. 14 with eps = 0.38 for both coals, by hand from PHYSICS.md
+  // 3's sigma_t (1016.1 and 895.9 Pa) and the diameters (2.8 and 3.2 mm):
+  // F_L = d^2 sigma_t 0.38 / 0.62.
+  const double f = 0.38 / 0.62;
+  const CoalDerived l = derive(longwanggou(), 0.38), i = derive(indonesian(), 0.38);
+  expect_rel(l.cohesion_force, 2.8e-3 * 2.8e-3 * 1016.1 * f, 1e-3);  // 4.882e-3 N
+  expect_rel(i.cohesion_force, 3.2e-3 * 3.2e-3 * 895.9 * f, 1e-3);   // 5.623e-3 N
+  EXPECT_DOUBLE_EQ(l.rumpf_porosity, 0.38);
+  // Eq. 15's porosity is still reported as measured; 0 keeps it in Eq. 14 too.
+  expect_rel(l.porosity, 0.5472, 1e-3);
+  expect_rel(derive(longwanggou(), 0.0).cohesion_force, 9.627e-3, 1e-3);
+  expect_rel(derive(longwanggou(), 0.0).rumpf_porosity, 0.5472, 1e-3);
+  // With one porosity the coals' forces differ by d^2 sigma_t only: 1.15, against Eq. 15's 1.60.
+  expect_rel(i.cohesion_force / l.cohesion_force, 1.1516, 1e-3);
+}
+
 TEST(CoarseGraining, TU2_ScalingWithK) {
   const CoalDerived l = derive(longwanggou());
   for (double k : {1.0, 2.0, 3.0, 4.0, 6.0}) {
