@@ -80,7 +80,9 @@ SiloWalls make_silo_walls(const SiloGeometry& g) {
   const Meridian rim{g.outlet_radius(), 0.0}, joint{g.top_radius(), g.cone_height},
       top{g.top_radius(), g.total_height()};
   auto cone = std::make_unique<FrustumFace>(0.0, 0.0, rim, joint, true);
-  cone->free_ends(true, false);  // the rim is a free edge, the joint is not
+  // The cone is a thin sheet: a particle that went out through the outlet and round the rim
+  // meets its outer side (docs/models/silo.md). Above the joint the cylinder stays one-sided.
+  cone->two_sided(true);
   s.walls.push_back(std::move(cone));
   if (g.cylinder_height > 0.0)  // no cylinder: no zero-length face
     s.walls.push_back(std::make_unique<FrustumFace>(0.0, 0.0, joint, top, true));

@@ -39,11 +39,10 @@ bool FrustumFace::near(const Vec3& c, double limit, WallHit& hit) const {
   const double dist = mr * nr_ + mz * nz_;
   // One-sided: a centre more than `limit` behind the surface is not in contact (it escaped).
   if (dist >= limit || dist < -limit) return false;
-  // A centre behind the surface near a free end came round the end (e.g. a particle below the
-  // outlet, outside it), not through the face: the edge there acts, not this thin face's back.
-  if (dist < 0.0 && ((free_a_ && t < -dist) || (free_b_ && t > len_ + dist))) return false;
-  hit.n = {nr_ * ex, nr_ * ey, nz_};
-  hit.distance = dist;
+  // A thin sheet's back is a surface too: its normal points away from the back.
+  const double s = two_sided_ && dist < 0.0 ? -1.0 : 1.0;
+  hit.n = {s * nr_ * ex, s * nr_ * ey, s * nz_};
+  hit.distance = s * dist;
   return true;
 }
 
@@ -68,7 +67,7 @@ bool CircleEdge::near(const Vec3& c, double limit, WallHit& hit) const {
   radial(cx_, cy_, c, r, ex, ey);
   const double mr = r - at_.r, mz = c.z - at_.z;
   for (const Meridian& u : adjacent_)
-    if (mr * u.r + mz * u.z > 0.0) return false;  // in front of an adjacent face: the face acts
+    if (mr * u.r + mz * u.z >= 0.0) return false;  // beside an adjacent face: the face acts
   const double dist = std::sqrt(mr * mr + mz * mz);
   if (dist >= limit || dist == 0.0) return false;
   hit.n = {mr / dist * ex, mr / dist * ey, mz / dist};

@@ -19,11 +19,13 @@ class FrustumFace final : public Wall {
  public:
   // `inner`: particles are on the axis side of the surface (inside a silo).
   FrustumFace(double cx, double cy, Meridian a, Meridian b, bool inner);
-  // Ends that are free edges (the outlet rim), not joints with another face: a centre behind the
-  // face near a free end came round the edge, so the thin face's back does not act there. At a
-  // (concave) joint it must act, or a hard-pressed particle could slip out through the corner.
-  FrustumFace& free_ends(bool at_a, bool at_b) {
-    free_a_ = at_a, free_b_ = at_b;
+  // A thin sheet (the silo's cone): both sides are surfaces, and a centre behind the face is
+  // pushed away from its back. With a circle edge at a free end this makes the wall a sheet with
+  // a rounded end, whose distance field is continuous all round the end: a particle that goes
+  // round the outlet rim meets the edge, then the cone's outer side, never a gap or a jump. A
+  // one-sided face (the default) pushes a centre behind it back to its front side.
+  FrustumFace& two_sided(bool on) {
+    two_sided_ = on;
     return *this;
   }
   bool near(const Vec3& c, double limit, WallHit& hit) const override;
@@ -35,7 +37,7 @@ class FrustumFace final : public Wall {
   Meridian a_;
   double ur_, uz_, len_;  // unit direction a -> b and length
   double nr_, nz_;        // unit normal towards the particle side
-  bool free_a_ = false, free_b_ = false;
+  bool two_sided_ = false;
 };
 
 class CircleEdge final : public Wall {
