@@ -158,7 +158,14 @@ void JobRunner::lock(const fs::path& dir) {
   // Held (never closed) until the process ends; not inherited by the children (O_CLOEXEC).
   const int fd = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (fd < 0) throw InputError({}, "--out", fmt::format("cannot open '{}'", file.string()));
-  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+  // Retried for a moment: `--status` (locked) holds a shared lock for an instant to test it.
+  bool got = false;
+  for (int tries = 0; tries < 20 && !got; ++tries) {
+    got = flock(fd, LOCK_EX | LOCK_NB) == 0;
+    if (!got && errno != EWOULDBLOCK) break;
+    if (!got) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!got) {
     close(fd);
     throw InputError({}, "--out",
                      fmt::format("'{}' is in use by another silodem study or calibration (it "
@@ -171,7 +178,8 @@ bool JobRunner::locked(const fs::path& dir) {
   const fs::path file = dir / ".lock";
   const int fd = open(file.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return false;
-  const bool held = flock(fd, LOCK_EX | LOCK_NB) != 0;  // released by the close if we got it
+  // A shared lock is refused while a study holds its exclusive one; released by the close.
+  const bool held = flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
   close(fd);
   return held;
 }
@@ -191,7 +199,9 @@ std::vector<JobOutcome> JobRunner::run(
     out[i].state = run_state(jobs[i].dir);
     if (out[i].state == RunState::Finished || out[i].state == RunState::Failed) {
       ++done;
-      const double w = run_wall_time(jobs[i].dir, std::nan(""));
+      // A failed run stopped early: its wall time says nothing about a run's length.
+      const double w = out[i].state == RunState::Finished ? run_wall_time(jobs[i].dir, std::nan(""))
+                                                          : std::nan("");
       if (std::isfinite(w)) wall_sum += w, ++timed;
       on_done(i);
     } else {
@@ -244,9 +254,11 @@ std::vector<JobOutcome> JobRunner::run(
                                     (log_dir_ / (jobs[i].name + ".log")).string());
         if (out[i].state == RunState::Finished || out[i].state == RunState::Failed) {
           ++done;
-          wall_sum += run_wall_time(jobs[i].dir,
-                                    std::chrono::duration<double>(Clock::now() - c.start).count());
-          ++timed;
+          if (out[i].state == RunState::Finished) {
+            wall_sum += run_wall_time(
+                jobs[i].dir, std::chrono::duration<double>(Clock::now() - c.start).count());
+            ++timed;
+          }
           on_done(i);
         }
       } else if (pid < 0 && errno == ECHILD) {

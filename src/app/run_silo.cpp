@@ -210,6 +210,7 @@ class SiloRun {
           fill_checkpoint, from);
     } catch (const InterruptedFill&) {
       progress_.finish();
+      if (!last_progress_.phase.empty()) note_progress(last_progress_, true);
       error_ = fmt::format("interrupted by signal {} during the fill", g_signal.load());
       write_summary("interrupted during the fill");
       fmt::print(stderr,
@@ -284,11 +285,16 @@ class SiloRun {
             const double frac = s.discharged / std::max(s.filled, 1e-30);
             const double to_go =
                 std::max(0.0, c_.discharge.target_fraction * s.filled - s.discharged);
-            // Unknown while nothing flows; a run with a time limit ends there at the latest.
+            // Unknown while nothing flows. The particle count falls linearly to none over the
+            // time to empty T_e = to_go / rate, so the wall time to simulate T of it is
+            // cost n T (1 - T / (2 T_e)): T = T_e if the run empties, less if max_time comes
+            // first.
             double eta_s = std::numeric_limits<double>::quiet_NaN();
-            if (s.recent_rate > 0 && wall_per_s > 0)
-              eta_s = wall_per_s *
-                      std::min(to_go / s.recent_rate, std::max(0.0, c_.discharge.max_time - s.t));
+            if (s.recent_rate > 0 && wall_per_s > 0) {
+              const double t_e = to_go / s.recent_rate;
+              const double t_run = std::min(t_e, std::max(0.0, c_.discharge.max_time - s.t));
+              eta_s = t_e > 0 ? cost * n * t_run * (1.0 - 0.5 * t_run / t_e) : 0.0;
+            }
             std::string eta = "?";
             if (std::isfinite(eta_s))
               eta = fmt::format("{:.0f} s", eta_s);
@@ -316,6 +322,12 @@ class SiloRun {
     const DischargeResult& d = dis_result_;
     if (d.end == DischargeEnd::Interrupted) {
       checkpoint();
+      // Where the checkpoint is: the resume starts here.
+      RunProgress p = last_progress_;
+      p.phase = "discharge";
+      p.t_s = d.end_time, p.discharged_kg = d.discharged_mass;
+      p.fraction = d.discharged_mass / std::max(d.filled_mass, 1e-30), p.wall_s = wall();
+      note_progress(p, true);
       error_ = fmt::format("interrupted by signal {} at t = {:.3f} s", g_signal.load(), d.end_time);
       write_summary("interrupted");
       fmt::print(stderr,
@@ -374,11 +386,19 @@ class SiloRun {
     return d.end == DischargeEnd::Emptied ? kExitOk : kExitNotEmptied;
   }
 
-  // progress.json (io/run_progress.hpp), at most every few seconds of wall time.
-  void note_progress(const RunProgress& p) {
-    if (wall() - progress_written_ < 5.0) return;
-    write_run_progress(out_, p);
+  // progress.json (io/run_progress.hpp), at most every few seconds of wall time. It is advisory:
+  // a failed write (a full disk) is reported once and does not stop the run.
+  void note_progress(const RunProgress& p, bool now = false) {
+    last_progress_ = p;
+    if (!now && wall() - progress_written_ < 5.0) return;
     progress_written_ = wall();
+    try {
+      write_run_progress(out_, p);
+    } catch (const std::exception& e) {
+      if (!progress_failed_)
+        fmt::print(stderr, "warning: cannot write progress.json ({}); the run goes on\n", e.what());
+      progress_failed_ = true;
+    }
   }
 
   // summary.json before the end: complete = false, so a killed run never looks finished.
@@ -478,6 +498,8 @@ class SiloRun {
   std::string error_;
   ProgressLine progress_;
   double wall_before_ = 0.0;
+  RunProgress last_progress_;
+  bool progress_failed_ = false;
   double progress_written_ =
       -std::numeric_limits<double>::infinity();  // wall() when progress.json was last written
   std::uint64_t case_hash_ = 0;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -390,11 +391,25 @@ std::vector<std::vector<std::size_t>> grid(const Study& s) {
 
 // `study --status`: each run's state, with its result (summary.json) or where it is
 // (progress.json), and whether a study is running in `out` now.
+// True if DIR/progress.json was written within the last minute (a running run rewrites it every
+// few seconds).
+bool progress_is_fresh(const fs::path& dir) {
+  std::error_code ec;
+  const auto t = fs::last_write_time(dir / "progress.json", ec);
+  return !ec && fs::file_time_type::clock::now() - t < std::chrono::seconds(60);
+}
+
 void print_status(const std::vector<RunJob>& jobs, const fs::path& out, double t0, double t1) {
   std::size_t width = 0, finished = 0;
   for (const auto& j : jobs) width = std::max(width, j.name.size());
+  const bool busy = JobRunner::locked(out);
   for (const auto& j : jobs) {
     const RunState st = run_state(j.dir);
+    // An unfinished run of a running study whose progress.json is fresh is running now.
+    const std::string state =
+        busy && (st == RunState::Resumable || st == RunState::Restart) && progress_is_fresh(j.dir)
+            ? "running"
+            : to_string(st);
     std::string what;
     if (st == RunState::Finished || st == RunState::Failed) {
       ++finished;
@@ -418,11 +433,11 @@ void print_status(const std::vector<RunJob>& jobs, const fs::path& out, double t
     } else if (st != RunState::Absent) {
       what = "no progress.json (not written yet, or a run of a silodem before 2026-12-04)";
     }
-    fmt::print("{:<{}}  {:<9}  {}\n", j.name, width, to_string(st), what);
+    fmt::print("{:<{}}  {:<9}  {}\n", j.name, width, state, what);
   }
-  fmt::print("{} of {} runs done; {}\n", finished, jobs.size(),
-             JobRunner::locked(out) ? "a study is running in " + out.string()
-                                    : "nothing is running in " + out.string());
+  fmt::print(
+      "{} of {} runs done; {}\n", finished, jobs.size(),
+      busy ? "a study is running in " + out.string() : "nothing is running in " + out.string());
 }
 
 }  // namespace

@@ -29,9 +29,10 @@ double number_or_nan(const nlohmann::json& j, const char* key) {
 }  // namespace
 
 void write_run_progress(const fs::path& dir, RunProgress p) {
-  const auto now =
-      std::chrono::time_point_cast<std::chrono::seconds>(std::chrono::system_clock::now());
-  p.updated = fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", now);
+  // UTC: fmt 9 formats a system_clock time point in local time.
+  p.updated = fmt::format(
+      "{:%Y-%m-%dT%H:%M:%SZ}",
+      fmt::gmtime(std::chrono::system_clock::to_time_t(std::chrono::system_clock::now())));
   const nlohmann::json j = {{"phase", p.phase},
                             {"t_s", number(p.t_s)},
                             {"discharged_kg", number(p.discharged_kg)},

@@ -81,17 +81,16 @@ SiloWalls make_silo_walls(const SiloGeometry& g) {
       top{g.top_radius(), g.total_height()};
   auto cone = std::make_unique<FrustumFace>(0.0, 0.0, rim, joint, true);
   // The cone is a thin sheet: a particle that went out through the outlet and round the rim
-  // meets its outer side (docs/models/silo.md). Above the joint the cylinder stays one-sided.
-  cone->two_sided(true);
+  // meets its outer side (docs/models/silo.md).
+  cone->back_at_a(true);
+  const Meridian u = cone->direction();
   s.walls.push_back(std::move(cone));
   if (g.cylinder_height > 0.0)  // no cylinder: no zero-length face
     s.walls.push_back(std::make_unique<FrustumFace>(0.0, 0.0, joint, top, true));
   // The rim is a convex edge seen from the outlet: it acts where the cone face does not, i.e.
   // behind the face's lower end. The cone/cylinder joint is concave from the inside: the two faces
   // cover it, with no edge of its own.
-  const double len = std::hypot(joint.r - rim.r, joint.z - rim.z);
-  s.walls.push_back(std::make_unique<CircleEdge>(
-      0.0, 0.0, rim, std::vector<Meridian>{{(joint.r - rim.r) / len, (joint.z - rim.z) / len}}));
+  s.walls.push_back(std::make_unique<CircleEdge>(0.0, 0.0, rim, std::vector<Meridian>{u}));
   s.valve_index = s.walls.size();
   s.walls.push_back(std::make_unique<PlaneWall>(Vec3{0, 0, -g.valve_gap}, Vec3{0, 0, 1}));
   return s;

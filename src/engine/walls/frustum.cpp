@@ -37,10 +37,10 @@ bool FrustumFace::near(const Vec3& c, double limit, WallHit& hit) const {
   const double t = mr * ur_ + mz * uz_;
   if (t < 0.0 || t > len_) return false;  // beyond the ends: not this face
   const double dist = mr * nr_ + mz * nz_;
-  // One-sided: a centre more than `limit` behind the surface is not in contact (it escaped).
-  if (dist >= limit || dist < -limit) return false;
-  // A thin sheet's back is a surface too: its normal points away from the back.
-  const double s = two_sided_ && dist < 0.0 ? -1.0 : 1.0;
+  // A centre more than `limit` behind the surface is not in contact (it escaped).
+  if (dist >= limit || dist <= -limit) return false;
+  // Behind the face near a free end a: the back acts, its normal pointing away from it.
+  const double s = back_at_a_ && dist < 0.0 && t < 2.0 * limit ? -1.0 : 1.0;
   hit.n = {s * nr_ * ex, s * nr_ * ey, s * nz_};
   hit.distance = s * dist;
   return true;

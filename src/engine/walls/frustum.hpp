@@ -19,15 +19,19 @@ class FrustumFace final : public Wall {
  public:
   // `inner`: particles are on the axis side of the surface (inside a silo).
   FrustumFace(double cx, double cy, Meridian a, Meridian b, bool inner);
-  // A thin sheet (the silo's cone): both sides are surfaces, and a centre behind the face is
-  // pushed away from its back. With a circle edge at a free end this makes the wall a sheet with
-  // a rounded end, whose distance field is continuous all round the end: a particle that goes
-  // round the outlet rim meets the edge, then the cone's outer side, never a gap or a jump. A
-  // one-sided face (the default) pushes a centre behind it back to its front side.
-  FrustumFace& two_sided(bool on) {
-    two_sided_ = on;
+  // End a is a free edge of a thin sheet (the outlet rim, with a circle edge of its own): near it
+  // the face's back is a surface too. A centre behind the face that projects within 2 `limit` of
+  // end a went out and round the edge, and is pushed away from the back: with the edge, the
+  // distance field is continuous all round the end, with no gap and no jump. Further along only
+  // a particle pressed through the face can be behind it, and the face pushes it back to its
+  // front, as everywhere on a face without a free end.
+  FrustumFace& back_at_a(bool on) {
+    back_at_a_ = on;
     return *this;
   }
+  // Unit direction (dr, dz) from end a to end b: what a circle edge at a takes as its adjacent
+  // face, so that the two split the space at exactly the same plane.
+  Meridian direction() const { return {ur_, uz_}; }
   bool near(const Vec3& c, double limit, WallHit& hit) const override;
   bool may_touch(const Vec3& c, double limit) const override;
   std::string describe() const override;
@@ -37,7 +41,7 @@ class FrustumFace final : public Wall {
   Meridian a_;
   double ur_, uz_, len_;  // unit direction a -> b and length
   double nr_, nz_;        // unit normal towards the particle side
-  bool two_sided_ = false;
+  bool back_at_a_ = false;
 };
 
 class CircleEdge final : public Wall {

@@ -114,8 +114,9 @@ TEST(SiloWalls, TheRimIsTheRoundedEndOfAThinSheet) {
   const double limit = 0.006;
   for (const double d : {0.001, 0.003, 0.0055})
     for (int k = 0; k <= 400; ++k) {
-      // From the inner normal at the rim (161.7 deg) clockwise round below it (270 deg) to 10 deg
-      // short of the face's own direction on the outer side (71.7 + 360 deg).
+      // Angles in the (r, z) plane from the r axis: from the inner normal at the rim (161.7 deg)
+      // round below the rim (270 deg) to 10 deg short of the face's own direction on the outer
+      // side (71.7 + 360 deg).
       const double phi0 = std::atan2(ur, -uz), phi1 = std::atan2(uz, ur) + 2 * kPi - 0.17;
       const double phi = phi0 + (phi1 - phi0) * k / 400.0;
       const double rel_r = d * std::cos(phi), rel_z = d * std::sin(phi);
@@ -131,10 +132,36 @@ TEST(SiloWalls, TheRimIsTheRoundedEndOfAThinSheet) {
         ++acting;
         EXPECT_NEAR(hit.distance, want, 1e-12) << "wall " << i << " at " << phi * 180 / kPi;
         EXPECT_NEAR(hit.n.x, er / want * std::cos(az), 1e-9) << phi * 180 / kPi;
+        EXPECT_NEAR(hit.n.y, er / want * std::sin(az), 1e-9) << phi * 180 / kPi;
         EXPECT_NEAR(hit.n.z, ez / want, 1e-9) << phi * 180 / kPi;
       }
       EXPECT_EQ(acting, 1) << "d " << d << ", angle " << phi * 180 / kPi << " deg";
     }
+}
+
+TEST(SiloWalls, APressedThroughCentreIsPushedBackIn) {
+  // Away from the rim only a particle pressed through the cone can be behind it (overlap > R,
+  // which the overlap guard stops first by default). The face must push it back inside, not out:
+  // signed distance -0.2 R, normal towards the axis. Near the rim (within 2 limit along the face)
+  // a centre behind it came round the rim and is pushed outwards.
+  const SiloGeometry g;
+  const SiloWalls w = make_silo_walls(g);
+  const double th = g.half_angle(), R = 0.005, limit = R;
+  for (const double z : {0.3, 0.6}) {
+    const double behind = 0.2 * R, r = g.radius_at(z) + behind / std::cos(th);
+    WallHit hit;
+    ASSERT_TRUE(w.walls[0]->near({r, 0, z}, limit, hit)) << z;
+    EXPECT_NEAR(hit.distance, -behind, 1e-12) << z;
+    EXPECT_NEAR(hit.n.x, -std::cos(th), 1e-12) << z;
+  }
+  // 1.5 limit up the face from the rim, 0.2 R behind it: the back acts, outwards.
+  const double t = 1.5 * limit, len = std::hypot(g.top_radius() - g.outlet_radius(), g.cone_height);
+  const double ur = (g.top_radius() - g.outlet_radius()) / len, uz = g.cone_height / len;
+  const Vec3 c{g.outlet_radius() + t * ur + 0.2 * R * uz, 0, t * uz - 0.2 * R * ur};
+  WallHit hit;
+  ASSERT_TRUE(w.walls[0]->near(c, limit, hit));
+  EXPECT_NEAR(hit.distance, 0.2 * R, 1e-12);
+  EXPECT_NEAR(hit.n.x, uz, 1e-12);
 }
 
 TEST(SiloWalls, SlidingDownAcrossTheConeCylinderJoint) {

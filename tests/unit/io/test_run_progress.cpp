@@ -6,6 +6,8 @@
 
 #include <unistd.h>
 #include <cmath>
+#include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -48,6 +50,34 @@ TEST(RunProgress, RoundTripsAndIsRemoved) {
   ASSERT_EQ(q->updated.size(), 20u);
   EXPECT_EQ(q->updated[10], 'T');
   EXPECT_EQ(q->updated.back(), 'Z');
+  remove_run_progress(d);
+  fs::remove_all(d);
+}
+
+TEST(RunProgress, TheTimeStampIsUtcWhateverTheLocalZone) {
+  // Written under a zone 5 h behind UTC, the stamp read back as UTC is now, not 5 h off.
+  const fs::path d = fresh("utc");
+  const char* old = std::getenv("TZ");
+  const std::string saved = old ? old : "";
+  setenv("TZ", "EST5", 1);
+  tzset();
+  RunProgress p;
+  p.phase = "fill";
+  const std::time_t before = std::time(nullptr);
+  write_run_progress(d, p);
+  const std::time_t after = std::time(nullptr);
+  if (old)
+    setenv("TZ", saved.c_str(), 1);
+  else
+    unsetenv("TZ");
+  tzset();
+  const auto q = read_run_progress(d);
+  ASSERT_TRUE(q.has_value());
+  std::tm tm{};
+  ASSERT_NE(strptime(q->updated.c_str(), "%Y-%m-%dT%H:%M:%SZ", &tm), nullptr) << q->updated;
+  const std::time_t stamped = timegm(&tm);
+  EXPECT_GE(stamped, before) << q->updated;
+  EXPECT_LE(stamped, after) << q->updated;
   remove_run_progress(d);
   EXPECT_FALSE(read_run_progress(d).has_value());
   remove_run_progress(d);  // removing what is not there is not an error
