@@ -406,11 +406,20 @@ void print_status(const std::vector<RunJob>& jobs, const fs::path& out, double t
   for (const auto& j : jobs) {
     const RunState st = run_state(j.dir);
     // An unfinished run of a running study whose progress.json is fresh is running now.
-    const std::string state =
+    std::string state =
         busy && (st == RunState::Resumable || st == RunState::Restart) && progress_is_fresh(j.dir)
             ? "running"
             : to_string(st);
     std::string what;
+    try {
+      check_run_matches(j, "study");
+    } catch (const InputError&) {
+      // The study file or its base case changed since this run started: its result is not the
+      // one the study now asks for, and running the study would refuse it.
+      fmt::print("{:<{}}  {:<9}  holds another case or other --set values than the study plans\n",
+                 j.name, width, "mismatch");
+      continue;
+    }
     if (st == RunState::Finished || st == RunState::Failed) {
       ++finished;
       try {

@@ -114,6 +114,11 @@ if ls "$work/s/runs/"*/progress.json > /dev/null 2>&1; then bad "a finished run 
 "$bin" study "$work/study.toml" --out "$work/s" --status > "$work/status4.txt" 2>&1
 [ "$(grep -c "finished  .*: [0-9.]* kg out in" "$work/status4.txt")" -eq 6 ] &&
   grep -q "^6 of 6 runs done" "$work/status4.txt" || bad "--status of the finished study: $(cat "$work/status4.txt")"
+# The same directory under a study whose fixed settings changed: every run is a mismatch, none done.
+sed 's/discharge.max_time=4/discharge.max_time=5/' "$work/study.toml" > "$work/changed.toml"
+"$bin" study "$work/changed.toml" --out "$work/s" --status > "$work/status5.txt" 2>&1
+[ "$(grep -c "  mismatch  " "$work/status5.txt")" -eq 6 ] &&
+  grep -q "^0 of 6 runs done" "$work/status5.txt" || bad "--status after the study changed: $(cat "$work/status5.txt")"
 
 # The killed and resumed run equals the same run made at once.
 "$bin" run "$src/tests/data/small_silo.toml" --out "$work/ref" --threads 1 --no-report \
