@@ -277,8 +277,11 @@ class SiloRun {
             if (t_prev < 0) {
               t_prev = s.t, wall_prev = now, n_prev = n;
             } else if (now - wall_prev >= 1.0 && s.t > t_prev && n + n_prev > 0) {
+              // At most twice the running estimate per update: a run paused for a while
+              // (SIGSTOP while the machine is needed) must not throw the ETA out by the pause,
+              // while a lasting slowdown is still learned within a few updates.
               const double c = (now - wall_prev) / ((s.t - t_prev) * 0.5 * (n + n_prev));
-              cost = cost > 0 ? 0.7 * cost + 0.3 * c : c;
+              cost = cost > 0 ? 0.7 * cost + 0.3 * std::min(c, 2.0 * cost) : c;
               t_prev = s.t, wall_prev = now, n_prev = n;
             }
             const double wall_per_s = cost * 0.5 * n;
