@@ -389,8 +389,6 @@ std::vector<std::vector<std::size_t>> grid(const Study& s) {
   return pts;
 }
 
-// `study --status`: each run's state, with its result (summary.json) or where it is
-// (progress.json), and whether a study is running in `out` now.
 // True if DIR/progress.json was written within the last minute (a running run rewrites it every
 // few seconds).
 bool progress_is_fresh(const fs::path& dir) {
@@ -399,6 +397,8 @@ bool progress_is_fresh(const fs::path& dir) {
   return !ec && fs::file_time_type::clock::now() - t < std::chrono::seconds(60);
 }
 
+// `study --status`: each run's state, with its result (summary.json) or where it is
+// (progress.json), and whether a study is running in `out` now.
 void print_status(const std::vector<RunJob>& jobs, const fs::path& out, double t0, double t1) {
   std::size_t width = 0, finished = 0;
   for (const auto& j : jobs) width = std::max(width, j.name.size());
@@ -406,7 +406,7 @@ void print_status(const std::vector<RunJob>& jobs, const fs::path& out, double t
   for (const auto& j : jobs) {
     const RunState st = run_state(j.dir);
     // An unfinished run of a running study whose progress.json is fresh is running now.
-    std::string state =
+    const std::string state =
         busy && (st == RunState::Resumable || st == RunState::Restart) && progress_is_fresh(j.dir)
             ? "running"
             : to_string(st);
