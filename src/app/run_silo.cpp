@@ -210,7 +210,11 @@ class SiloRun {
           fill_checkpoint, from);
     } catch (const InterruptedFill&) {
       progress_.finish();
-      if (!last_progress_.phase.empty()) note_progress(last_progress_, true);
+      if (!last_progress_.phase.empty()) {
+        RunProgress p = last_progress_;
+        p.wall_s = wall();
+        note_progress(p, true);
+      }
       error_ = fmt::format("interrupted by signal {} during the fill", g_signal.load());
       write_summary("interrupted during the fill");
       fmt::print(stderr,

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
@@ -63,9 +64,9 @@ TEST(RunProgress, TheTimeStampIsUtcWhateverTheLocalZone) {
   tzset();
   RunProgress p;
   p.phase = "fill";
-  const std::time_t before = std::time(nullptr);
+  const std::time_t before = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   write_run_progress(d, p);
-  const std::time_t after = std::time(nullptr);
+  const std::time_t after = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
   if (old)
     setenv("TZ", saved.c_str(), 1);
   else
