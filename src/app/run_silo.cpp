@@ -267,13 +267,14 @@ class SiloRun {
     control.checkpoint = [this] { checkpoint(); };
     control.checkpoint_interval = c_.time.checkpoint_interval;
     control.checkpoint_wall_interval = c_.time.checkpoint_wall_interval;
-    // ETA: the mass still to leave at the recent outflow rate gives the simulated seconds to go;
-    // a step costs in proportion to the particles, which fall about linearly to none at a steady
-    // outflow, so the rest costs the recent wall time per particle and simulated second times
-    // half the particles left. The cost is smoothed over snapshots at least 1 s of wall apart (a
-    // shared machine changes speed). Not the fraction out so far, which overestimates the time
-    // while the first bins still fill.
+    // ETA (discharge_eta, io/run_progress.hpp): the mass still to leave at the outflow rate of
+    // the last 5 simulated s (one bin's rate until then) gives the simulated seconds to go; a
+    // step costs in proportion to the particles, which fall about linearly to none at a steady
+    // outflow. The cost, wall time per particle and simulated second, is smoothed over snapshots
+    // at least 1 s of wall apart (a shared machine changes speed). Not the fraction out so far,
+    // which overestimates the time while the first bins still fill.
     double t_prev = -1.0, wall_prev = 0.0, n_prev = 0.0, cost = 0.0;
+    OutflowWindow outflow;
     try {
       dis_result_ = dis_->run(
           [&](const DischargeState& s) {
@@ -288,24 +289,19 @@ class SiloRun {
               cost = cost > 0 ? 0.7 * cost + 0.3 * std::min(c, 2.0 * cost) : c;
               t_prev = s.t, wall_prev = now, n_prev = n;
             }
-            const double wall_per_s = cost * 0.5 * n;
+            outflow.add(s.t, s.discharged);
             const double frac = s.discharged / std::max(s.filled, 1e-30);
             const double to_go =
                 std::max(0.0, c_.discharge.target_fraction * s.filled - s.discharged);
-            // Unknown while nothing flows. The particle count falls linearly to none over the
-            // time to empty T_e = to_go / rate, so the wall time to simulate T of it is
-            // cost n T (1 - T / (2 T_e)): T = T_e if the run empties, less if max_time comes
-            // first.
-            double eta_s = std::numeric_limits<double>::quiet_NaN();
-            if (s.recent_rate > 0 && wall_per_s > 0) {
-              const double t_e = to_go / s.recent_rate;
-              const double t_run = std::min(t_e, std::max(0.0, c_.discharge.max_time - s.t));
-              eta_s = t_e > 0 ? cost * n * t_run * (1.0 - 0.5 * t_run / t_e) : 0.0;
-            }
+            const double window_rate = outflow.rate();
+            // Unknown while nothing flows.
+            const double eta_s = discharge_eta(
+                cost, n, to_go, std::isfinite(window_rate) ? window_rate : s.recent_rate,
+                c_.discharge.max_time - s.t);
             std::string eta = "?";
             if (std::isfinite(eta_s))
               eta = fmt::format("{:.0f} s", eta_s);
-            else if (wall_per_s > 0)
+            else if (cost > 0)
               eta = "? (no outflow now)";
             RunProgress p;
             p.phase = "discharge";

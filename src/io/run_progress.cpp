@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
@@ -83,6 +84,36 @@ double runs_eta(const std::vector<double>& running_left, const std::vector<doubl
   for (std::size_t k = 0; k < pending; ++k)
     *std::min_element(free_at.begin(), free_at.end()) += mean_run;
   return *std::max_element(free_at.begin(), free_at.end());
+}
+
+void OutflowWindow::add(double t, double mass_out) {
+  if (!s_.empty() && t < s_.back().first) s_.clear();  // time went back: a new run
+  // The newest pair moves with each call until it is window/100 past the one before it.
+  if (s_.size() >= 2 && t - s_[s_.size() - 2].first < window_ / 100)
+    s_.back() = {t, mass_out};
+  else
+    s_.emplace_back(t, mass_out);
+  // Keep one pair at or before t - window, so that the span covers the whole window.
+  while (s_.size() > 2 && s_[1].first <= t - window_) s_.pop_front();
+}
+
+double OutflowWindow::rate() const {
+  if (s_.size() < 2) return RunProgress::nan;
+  const auto& [t1, m1] = s_.back();
+  // The pair that starts the window: the newest at or before t1 - window, else the oldest.
+  auto it = s_.begin();
+  while (std::next(it) != s_.end() && std::next(it)->first <= t1 - window_) ++it;
+  const double span = t1 - it->first;
+  if (span < 0.2 * window_) return RunProgress::nan;
+  return (m1 - it->second) / span;
+}
+
+double discharge_eta(double cost, double n, double to_go, double rate, double time_left) {
+  if (!(rate > 0) || !(cost > 0)) return RunProgress::nan;
+  const double t_e = to_go / rate;
+  if (!(t_e > 0)) return 0.0;
+  const double t_run = std::min(t_e, std::max(0.0, time_left));
+  return cost * n * t_run * (1.0 - 0.5 * t_run / t_e);
 }
 
 }  // namespace silodem

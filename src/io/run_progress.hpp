@@ -5,6 +5,7 @@
 // reads it to estimate its end before any of its runs has finished; a person or a script can
 // read it too.
 #pragma once
+#include <deque>
 #include <filesystem>
 #include <limits>
 #include <optional>
@@ -36,5 +37,26 @@ void remove_run_progress(const std::filesystem::path& dir);
 // `mean_run` - `running_elapsed` (at least 0). Returns -1 if the answer needs an unknown.
 double runs_eta(const std::vector<double>& running_left, const std::vector<double>& running_elapsed,
                 std::size_t pending, double mean_run, int slots);
+
+// The outflow rate over the last `window` simulated seconds, from the (t, mass out) pairs a
+// discharge reports. An ETA needs this, not one outlet bin's rate: an intermittent flow's bins
+// swing between a burst and nothing, and the ETA with them by orders of magnitude. NaN until
+// the pairs span a fifth of the window (after a start or a resume).
+class OutflowWindow {
+ public:
+  explicit OutflowWindow(double window_s = 5.0) : window_(window_s) {}
+  void add(double t, double mass_out);
+  double rate() const;
+
+ private:
+  double window_;
+  std::deque<std::pair<double, double>> s_;  // (t, mass out), at least window/100 apart
+};
+
+// The wall time to the end of a discharge: `to_go` kg still to leave at `rate` kg/s empties the
+// silo in T_e = to_go / rate simulated s; the particles fall about linearly from `n` to none over
+// it, so at `cost` wall s per particle and simulated s the part T = min(T_e, time_left) costs
+// cost n T (1 - T / (2 T_e)). NaN if rate or cost is not positive.
+double discharge_eta(double cost, double n, double to_go, double rate, double time_left);
 
 }  // namespace silodem

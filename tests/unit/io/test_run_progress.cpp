@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // progress.json (io/run_progress.hpp): what a run writes comes back, an unknown ETA stays
-// unknown, a damaged file is "no progress"; and runs_eta, the wall time until a set of runs ends,
-// against schedules worked by hand.
+// unknown, a damaged file is "no progress"; runs_eta, the wall time until a set of runs ends,
+// against schedules worked by hand; and a run's own ETA: the windowed outflow rate of an
+// intermittent flow, and discharge_eta against hand-worked cases.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -130,6 +131,59 @@ TEST(RunsEta, UnknownsFallBackOrAreUnknown) {
   // Without a mean, an unknown running run or a pending one makes the answer unknown.
   EXPECT_EQ(runs_eta({kNaN, 100}, {150, 0}, 0, kNaN, 2), -1.0);
   EXPECT_EQ(runs_eta({100}, {0}, 1, kNaN, 2), -1.0);
+}
+
+// An intermittent flow: bursts of 0.5 s at 1 kg/s every 5 s, mean 0.1 kg/s, reported every 1 ms
+// of simulated time as a discharge does. One 0.5 s outlet bin sees 1 kg/s or nothing, so an ETA
+// built on it swings tenfold or is unknown; the 5 s window must give the mean. Any 5 s window
+// holds exactly one burst (0.5 kg); the window's start may lie up to 0.05 s (window/100) before
+// t - 5 s, which can add up to 0.05 kg over up to 5.05 s: 0.099-0.109 kg/s.
+TEST(OutflowWindow, AnIntermittentFlowGivesItsMeanRate) {
+  OutflowWindow w(5.0);
+  double mass = 0.0;
+  int checked = 0;
+  for (int i = 1; i <= 30000; ++i) {
+    const double t = 1e-3 * i;
+    if (std::fmod(t, 5.0) < 0.5) mass += 1.0 * 1e-3;
+    w.add(t, mass);
+    if (t < 0.999) {
+      EXPECT_TRUE(std::isnan(w.rate())) << "t = " << t;  // less than a fifth of the window
+    } else if (t >= 5.06) {
+      ASSERT_GE(w.rate(), 0.099) << "t = " << t;
+      ASSERT_LE(w.rate(), 0.1095) << "t = " << t;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 24000);
+  // Between 1 s and 5 s the window is what there is, from the first pair (1 ms, 1 g out): a burst
+  // of 0.5 kg in the first 0.5 s, then nothing, seen at 2 s.
+  OutflowWindow v(5.0);
+  for (int i = 1; i <= 2000; ++i) v.add(1e-3 * i, i <= 500 ? 1e-3 * i : 0.5);
+  EXPECT_NEAR(v.rate(), (0.5 - 1e-3) / 1.999, 1e-9);
+}
+
+// A resumed run reports times from its checkpoint on; a time before the newest starts anew.
+TEST(OutflowWindow, TimeGoingBackStartsAnew) {
+  OutflowWindow w(5.0);
+  for (int i = 1; i <= 6000; ++i) w.add(1e-3 * i, 2e-3 * i);  // 2 kg/s
+  EXPECT_NEAR(w.rate(), 2.0, 1e-9);
+  w.add(3.0, 0.0);
+  EXPECT_TRUE(std::isnan(w.rate()));
+  for (int i = 1; i <= 2000; ++i) w.add(3.0 + 1e-3 * i, 0.5e-3 * i);  // 0.5 kg/s
+  EXPECT_NEAR(w.rate(), 0.5, 1e-9);
+}
+
+// cost 1e-3 wall s per particle and simulated s, 1000 particles, 10 kg to go at 1 kg/s: T_e = 10 s
+// and the count falls linearly to none, so the wall time is 1e-3 x 1000 x 10 / 2 = 5 s. With 5 s
+// of max_time left: 1 x 5 x (1 - 5 / 20) = 3.75 s.
+TEST(DischargeEta, HandWorkedCases) {
+  EXPECT_DOUBLE_EQ(discharge_eta(1e-3, 1000, 10, 1.0, 100), 5.0);
+  EXPECT_DOUBLE_EQ(discharge_eta(1e-3, 1000, 10, 1.0, 5), 3.75);
+  EXPECT_DOUBLE_EQ(discharge_eta(1e-3, 1000, 0, 1.0, 5), 0.0);       // nothing left to go
+  EXPECT_DOUBLE_EQ(discharge_eta(1e-3, 1000, 10, 1.0, -1), 0.0);     // past max_time
+  EXPECT_TRUE(std::isnan(discharge_eta(1e-3, 1000, 10, 0.0, 100)));  // no outflow
+  EXPECT_TRUE(std::isnan(discharge_eta(0.0, 1000, 10, 1.0, 100)));   // no cost yet
+  EXPECT_TRUE(std::isnan(discharge_eta(1e-3, 1000, 10, kNaN, 100)));
 }
 
 }  // namespace
