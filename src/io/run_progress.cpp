@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "io/atomic_file.hpp"
@@ -99,13 +98,10 @@ void OutflowWindow::add(double t, double mass_out) {
 
 double OutflowWindow::rate() const {
   if (s_.size() < 2) return RunProgress::nan;
-  const auto& [t1, m1] = s_.back();
-  // The pair that starts the window: the newest at or before t1 - window, else the oldest.
-  auto it = s_.begin();
-  while (std::next(it) != s_.end() && std::next(it)->first <= t1 - window_) ++it;
-  const double span = t1 - it->first;
+  // add() keeps the front at the newest pair at or before the window's start (else the oldest).
+  const double span = s_.back().first - s_.front().first;
   if (span < 0.2 * window_) return RunProgress::nan;
-  return (m1 - it->second) / span;
+  return (s_.back().second - s_.front().second) / span;
 }
 
 double discharge_eta(double cost, double n, double to_go, double rate, double time_left) {
