@@ -50,7 +50,7 @@ class OutflowWindow {
 
  private:
   double window_;
-  std::deque<std::pair<double, double>> s_;  // (t, mass out), at least window/100 apart
+  std::deque<std::pair<double, double>> s_;  // (t, mass out), about window/100 apart
 };
 
 // The wall time to the end of a discharge: `to_go` kg still to leave at `rate` kg/s empties the
