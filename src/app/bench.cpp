@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // `silodem bench`: the throughput of a real silo bed (issue 6). Fills the case's silo (by default
-// the paper's L3-I2 at k = 3 with the paper's cohesion) or loads that fill from a cache, then
+// cases/paper/L3-I2.toml, the paper's L3-I2 at k = 3) or loads that fill from a cache, then
 // times N steps of the settled bed (valve closed) and N steps right after the valve opens. With
 // --flowing T it also discharges the bed to T s (cached as well) and times N steps there: a
 // flowing bed anyone can make again, not a checkpoint on one machine.
