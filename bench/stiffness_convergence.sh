@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Is the default time step converged? Empties cases/default.toml (or CASE) at its stiffness and at
+# Is the time step converged? Empties studies/bases/small-silo-10pct.toml (the demo before issue
+# 16 item 5, whose table docs/validation.md section 3 holds; or CASE) at its stiffness and at
 # 10x (and 100x) k_n, dt scaled with t_col, for several seeds, dry and cohesive, and prints the
 # discharge time and mean rate of each run and the seed means (docs/validation.md section 3).
 # Long: about 35 minutes on one core. Not part of the test suite.
@@ -8,7 +9,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 bin=${1:-$root/build/release/silodem}
-case_file=${2:-$root/cases/default.toml}
+case_file=${2:-$root/studies/bases/small-silo-10pct.toml}
 out=${3:-stiffness-runs}
 mkdir -p "$out"
 py=/usr/bin/python3; [ -x "$py" ] || py=python3

@@ -11,7 +11,9 @@ set -euo pipefail
 out=${1:?usage: paper_silo_calibrate.sh OUT_DIR [SILODEM]}
 here=$(cd "$(dirname "$0")/.." && pwd)
 silodem=${2:-$here/build/release/silodem}
-exec "$silodem" calibrate "$here/cases/paper/L3-I2.toml" \
+# The base is the paper case as it was when this search ran (the paper's force as printed,
+# alpha = 3): studies/bases/paper-L3-I2-eq15.toml.
+exec "$silodem" calibrate "$here/studies/bases/paper-L3-I2-eq15.toml" \
   --param contact.particle_particle.cohesion.factor,contact.particle_wall.cohesion.factor \
   --target window_rate_kg_s=0.335 --window 0,12 --bracket 0.1,0.13 --seeds 3 --tolerance 0.1 \
   --out "$out" --threads 2 --jobs 2 \

@@ -126,8 +126,10 @@ std::string case_report_text(const Case& c, const CaseReport& r) {
     s += fmt::format("  tensile strength (Eq. 16)    {:.1f} Pa\n", m.measured.tensile_strength);
     s += fmt::format("  F_L (Eq. 14)                 {:.4e} N   Bond number {:.2f}\n",
                      m.measured.cohesion_force, m.measured.bond_number);
-    s += fmt::format("  F_L,cg (Eq. 13)              {:.4e} N   Bond number {:.2f}\n",
-                     m.cohesion_cg, m.bond_number_cg);
+    s += fmt::format(
+        "  F_L,cg = k^alpha F_L         {:.4e} N   Bond number {:.2f}"
+        " (before cohesion.factor)\n",
+        m.cohesion_cg, m.bond_number_cg);
     s += fmt::format("  CG diameter / mass           {:.4g} mm / {:.4e} kg\n", m.cg_diameter * 1e3,
                      m.cg_mass);
     s += fmt::format("  e_cg                         {:.4g}{}\n", m.restitution.value,

@@ -2,8 +2,8 @@
 # End-to-end test of `silodem bench` on the small silo: the JSON the issue names, the fill
 # cache (made, reused, keyed on the case), the exported bed against the case's own numbers, and
 # a clear refusal of a case without a silo. The case is the demo as it was before issue 16 item 5
-# (10% of Eq. 13-14), whose bed flows as soon as the valve opens; the shipped demo holds its bed
-# for the first second or more.
+# (10% of Eq. 13-14), whose bed flows freely once the valve opens, so that --flowing 0.3 has
+# removed particles; the shipped demo only trickles at first.
 set -u
 bin=$1
 src=$2

@@ -17,6 +17,7 @@ bad() { say "FAIL: $*"; fail=1; }
   --set coarse_graining.cohesion_exponent=3 > "$work/check.json" || bad "check --json exited $?"
 "$bin" check "$src/cases/default.toml" --json > "$work/shipped.json" || bad "check --json exited $?"
 python_ok=$(command -v python3 || true)
+[ -n "$python_ok" ] || bad "python3 is missing: the check --json values are not tested"
 if [ -n "$python_ok" ]; then
   python3 - "$work/check.json" "$work/shipped.json" <<'PY' || fail=1
 import json, sys
