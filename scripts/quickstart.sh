@@ -12,7 +12,7 @@ rc=0
 # Exit 4: the flow stopped (no outflow for stall_time) or max_time came, with every file written;
 # the default case sits close to where its outlet arches (docs/validation/flow-or-arch.md 4.7).
 if [ $rc -eq 4 ]; then
-  echo "the flow stopped before the silo emptied (exit 4); results in $out"
+  echo "the run ended before the silo emptied (flow stopped or max_time; exit 4); results in $out"
 elif [ $rc -ne 0 ]; then
   exit $rc
 else
