@@ -141,19 +141,26 @@ int calibrate_command(const CalibrateOptions& o) {
 
   const fs::path out(o.out_dir);
   JobRunner::lock(out);
-  {  // The same search only: another command line in this DIR would mix two searches.
-    std::string cmd = fmt::format("case={}\n", case_abs);
+  {  // The same search only: another command line in this DIR would mix two searches. The case
+     // is compared by content, run by run (check_run_matches), not by its path: a copy of the
+     // case at another path (a frozen base) continues the search. search.txt records the path.
+    std::string cmd;
     for (const auto& k : o.params) cmd += "param=" + k + "\n";
     cmd += fmt::format("target={}\nwindow={},{}\nbracket={},{}\nseeds={}\ntolerance={}\n", o.target,
                        w0, w1, toml_number(lo), toml_number(hi), o.seeds, o.tolerance);
     for (const auto& s : o.overrides) cmd += "set=" + s + "\n";
     const fs::path f = out / "search.txt";
-    if (fs::exists(f) && read_text(f) != cmd)
-      throw InputError({}, "--out",
-                       fmt::format("'{}' holds a search with other settings ({}); use a new --out "
-                                   "DIR",
-                                   out.string(), f.string()));
-    write_text(f, cmd);
+    const std::string case_line = "case=" + case_abs + "\n";
+    if (fs::exists(f)) {
+      std::string old = read_text(f);
+      if (old.rfind("case=", 0) == 0) old.erase(0, old.find('\n') + 1);
+      if (old != cmd)
+        throw InputError({}, "--out",
+                         fmt::format("'{}' holds a search with other settings ({}); use a new "
+                                     "--out DIR",
+                                     out.string(), f.string()));
+    }
+    write_text(f, case_line + cmd);
   }
   const toml::table meta{{"case", case_abs},
                          {"params",

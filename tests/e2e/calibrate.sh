@@ -68,6 +68,20 @@ for r in "$work/cal/runs/"*; do
 done
 # The calibrated case runs as it is.
 "$bin" check "$work/cal/calibrated.toml" > /dev/null 2>&1 || bad "calibrated.toml does not check"
+# The search continued from a copy of its case at another path, with a comment added (a frozen
+# base): the same case by content, so it is accepted and no evaluation is made again. A copy with
+# another value is refused.
+runs_before=$(ls "$work/cal/runs" | wc -l)
+{ echo "# a frozen copy of the case"; cat "$case"; } > "$work/copy.toml"
+copy_args=("${args[@]}")
+copy_args[1]=$work/copy.toml
+"$bin" "${copy_args[@]}" > "$work/c4.log" 2>&1 || bad "the search from a copy of its case: $(tail -3 "$work/c4.log")"
+[ "$(ls "$work/cal/runs" | wc -l)" -eq "$runs_before" ] || bad "the search from a copy made new evaluations"
+grep -q "^case=$work/copy.toml$" "$work/cal/search.txt" || bad "search.txt does not record the case path"
+sed 's/^title = .*/title = "another case"/' "$case" > "$work/other.toml"
+copy_args[1]=$work/other.toml
+"$bin" "${copy_args[@]}" > /dev/null 2> "$work/c5.err"
+[ $? -eq 2 ] && grep -q "holds another case" "$work/c5.err" || bad "a search from another case: $(cat "$work/c5.err")"
 # Another search in the same directory is refused.
 "$bin" calibrate "$case" --param silo.outlet_diameter_mm --target mean_rate_kg_s=1 --bracket 20,60 \
   --out "$work/cal" > /dev/null 2> "$work/c3.err"

@@ -16,10 +16,16 @@ bad() { say "FAIL: $*"; fail=1; }
 "$bin" check "$src/cases/default.toml" --json --set coarse_graining.rumpf_porosity=0 \
   --set coarse_graining.cohesion_exponent=3 > "$work/check.json" || bad "check --json exited $?"
 "$bin" check "$src/cases/default.toml" --json > "$work/shipped.json" || bad "check --json exited $?"
+# The force each contact kind gets: factor x pair rule of F_L,cg, factor x wall_factor x F_L,cg.
+"$bin" check "$src/cases/default.toml" --json --set contact.particle_particle.cohesion.factor=0.5 \
+  --set contact.particle_particle.cohesion.pair_rule=min --set contact.particle_wall.cohesion.factor=2 \
+  --set contact.particle_wall.cohesion.wall_factor=0.25 > "$work/applied.json" || bad "check --json exited $?"
+"$bin" check "$src/cases/default.toml" --set contact.particle_particle.cohesion.factor=0.5 \
+  > "$work/applied.txt" || bad "check exited $?"
 python_ok=$(command -v python3 || true)
 [ -n "$python_ok" ] || bad "python3 is missing: the check --json values are not tested"
 if [ -n "$python_ok" ]; then
-  python3 - "$work/check.json" "$work/shipped.json" <<'PY' || fail=1
+  python3 - "$work/check.json" "$work/shipped.json" "$work/applied.json" "$work/applied.txt" <<'PY' || fail=1
 import json, sys
 d = json.load(open(sys.argv[1]))
 need = ["name", "porosity", "tensile_strength_pa", "cohesion_force_n", "cohesion_force_cg_n",
@@ -50,6 +56,21 @@ for m, d_sv in zip(shipped["materials"], [2.8e-3, 3.2e-3]):
     near(m["cohesion_force_cg_n"], 9 * f, 1e-6)
 near(shipped["materials"][0]["tensile_strength_pa"], 1016.1, 1e-3)
 near(shipped["materials"][0]["cohesion_force_n"], 4.8826e-3, 1e-3)
+# The applied force per contact kind, with the factors and rules set on the command line.
+a = json.load(open(sys.argv[3]))
+fl, fi = (m["cohesion_force_cg_n"] for m in a["materials"])
+rows = {(r["section"], tuple(r["coals"])): r["force_n"] for r in a["cohesion_applied"]}
+want = {("particle_particle", ("Longwanggou", "Longwanggou")): 0.5 * fl,
+        ("particle_particle", ("Longwanggou", "Indonesian")): 0.5 * min(fl, fi),
+        ("particle_particle", ("Indonesian", "Indonesian")): 0.5 * fi,
+        ("particle_wall", ("Longwanggou",)): 2 * 0.25 * fl,
+        ("particle_wall", ("Indonesian",)): 2 * 0.25 * fi}
+assert set(rows) == set(want), sorted(rows)
+for key, f in want.items():
+    near(rows[key], f, 1e-9)
+text = open(sys.argv[4]).read()
+assert "moisture force per contact, as applied" in text, text
+assert "pair Longwanggou-Indonesian" in text and f"{0.25 * (fl + fi):.4e} N" in text, text
 print("check --json ok")
 PY
 fi
