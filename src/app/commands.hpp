@@ -65,6 +65,8 @@ struct ShearTestOptions {
   double width = 10.0, height = 8.0;  // mean CG diameters
   double inertial_number = 2e-3;
   double preshear_strain = 0.5, represhear_strain = 0.2, failure_strain = 0.25;
+  std::string failure = "peak-ratio";  // the failure point of a shear: peak-ratio | peak-tau
+  std::string refit;  // a finished shear test's DIR: its series evaluated again (no case)
   std::vector<std::string> overrides;
 };
 

@@ -161,8 +161,7 @@ int main(int argc, char** argv) {
       "shear-test",
       "the FT-4 shear test (ASTM D7891) on each coal of a case with its contact model: yield "
       "locus, C, phi, f_c, sigma_1, ffc, bulk density");
-  shear_cmd->add_option("case", shear.case_path, "case file (TOML)")
-      ->required()
+  shear_cmd->add_option("case", shear.case_path, "case file (TOML); none with --refit")
       ->check(CLI::ExistingFile);
   shear_cmd->add_option("--out", shear.out_dir, "output directory (new or empty)")->required();
   shear_cmd->add_option("--preshear", shear.preshear_kpa,
@@ -196,6 +195,16 @@ int main(int argc, char** argv) {
       ->add_option("--failure-strain", shear.failure_strain,
                    "strain of each shear to failure (default 0.25)")
       ->check(CLI::Range(0.01, 10.0));
+  shear_cmd
+      ->add_option("--failure", shear.failure,
+                   "failure point of each shear: peak-ratio (largest tau / sigma, default) or "
+                   "peak-tau (largest tau, before 2026-12-05)")
+      ->check(CLI::IsMember({"peak-ratio", "peak-tau"}));
+  shear_cmd
+      ->add_option("--refit", shear.refit,
+                   "evaluate a finished shear test's DIR again from its series (with --failure): "
+                   "failure points, yield locus and figure, written to --out; no case, no run")
+      ->check(CLI::ExistingDirectory);
   shear_cmd->add_option("--set", shear.overrides, "override a case-file value (repeatable)");
 
   auto* docs_cmd =

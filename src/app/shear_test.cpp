@@ -3,7 +3,9 @@
 // the FT-4 shear test (scenario/shear_cell.hpp) on each coal of a case. Writes DIR/shear_test.json
 // (the results), DIR/points.csv (every pre-shear and failure point), DIR/series_<coal>.csv (the
 // stresses through the whole test) and DIR/figures/yield_locus_<coal>.png (the locus with both
-// Mohr circles); --json prints the JSON on stdout as well.
+// Mohr circles); --json prints the JSON on stdout as well. `--refit FROM --out DIR [--failure
+// peak-tau]` evaluates a finished test's recorded series again with another failure criterion
+// (the same evaluation as a run's, so the same trajectory gives the same points), running nothing.
 #include <fmt/format.h>
 
 #include <chrono>
@@ -58,30 +60,38 @@ nlohmann::json finite_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
-nlohmann::json result_json(const ShearTestResult& r, const CoalProperties& coal,
-                           const ShearTestSpec& spec, double wall_time) {
+// The fields that follow from the failure points: what --refit replaces.
+nlohmann::json locus_json(const ShearTestResult& r) {
   nlohmann::json locus = nlohmann::json::array();
   for (const auto& p : r.points) locus.push_back({p.sigma / 1e3, p.tau / 1e3});
-  nlohmann::json pre = nlohmann::json::array();
-  for (const auto& p : r.points) pre.push_back({p.preshear.sigma / 1e3, p.preshear.tau / 1e3});
   const YieldLocus& y = r.locus;
   return {
-      {"coal", r.coal},
       {"cohesion_kpa", y.cohesion / 1e3},
       {"friction_angle_deg", y.friction_angle / units::deg},
       {"unconfined_yield_kpa", y.unconfined_yield / 1e3},
       {"major_consolidation_kpa", y.major_consolidation / 1e3},
       {"ffc", finite_or_null(y.flow_function)},
-      {"bulk_density_kg_m3", r.bulk_density},
-      {"solid_fraction", r.solid_fraction},
       {"yield_locus", locus},
-      {"preshear_kpa", {r.preshear.sigma / 1e3, r.preshear.tau / 1e3}},
-      {"preshear_points", pre},
-      {"preshear_steady", r.preshear_steady},
       {"fit_rms_residual_kpa", y.rms_residual / 1e3},
       {"consolidation_circle_tangent", y.consolidation_tangent},
       {"mohr_unconfined_kpa", {y.unconfined.centre / 1e3, y.unconfined.radius / 1e3}},
       {"mohr_consolidation_kpa", {y.consolidation.centre / 1e3, y.consolidation.radius / 1e3}},
+      {"warnings", r.warnings},
+  };
+}
+
+nlohmann::json result_json(const ShearTestResult& r, const CoalProperties& coal,
+                           const ShearTestSpec& spec, double wall_time) {
+  nlohmann::json pre = nlohmann::json::array();
+  for (const auto& p : r.points) pre.push_back({p.preshear.sigma / 1e3, p.preshear.tau / 1e3});
+  nlohmann::json j = locus_json(r);
+  j.update(nlohmann::json{
+      {"coal", r.coal},
+      {"bulk_density_kg_m3", r.bulk_density},
+      {"solid_fraction", r.solid_fraction},
+      {"preshear_kpa", {r.preshear.sigma / 1e3, r.preshear.tau / 1e3}},
+      {"preshear_points", pre},
+      {"preshear_steady", r.preshear_steady},
       {"measured",
        {{"cohesion_kpa", coal.cohesion / 1e3},
         {"friction_angle_deg", coal.friction_angle / units::deg},
@@ -97,8 +107,8 @@ nlohmann::json result_json(const ShearTestResult& r, const CoalProperties& coal,
         {"time_step_s", r.dt},
         {"steps", r.steps},
         {"wall_time_s", wall_time}}},
-      {"warnings", r.warnings},
-  };
+  });
+  return j;
 }
 
 void write_points(const fs::path& file, const std::vector<ShearTestResult>& results) {
@@ -131,10 +141,126 @@ void write_series(const fs::path& file, const ShearTestResult& r) {
   w.finish();
 }
 
+// Prints each coal's result in one line, or the JSON.
+void print_results(const nlohmann::json& doc, const fs::path& out, bool json) {
+  if (json) {
+    fmt::print("{}", doc.dump(2) + "\n");
+    return;
+  }
+  for (const auto& r : doc["coals"])
+    fmt::print(
+        "{}: C = {:.3f} kPa (measured {:.3f}), phi = {:.1f} deg (measured {:.1f}), f_c = "
+        "{:.3f} kPa, sigma_1 = {:.3f} kPa, ffc = {}, bulk density {:.0f} kg/m3 "
+        "(measured {:.0f})\n",
+        r["coal"].get<std::string>(), r["cohesion_kpa"].get<double>(),
+        r["measured"]["cohesion_kpa"].get<double>(), r["friction_angle_deg"].get<double>(),
+        r["measured"]["friction_angle_deg"].get<double>(), r["unconfined_yield_kpa"].get<double>(),
+        r["major_consolidation_kpa"].get<double>(),
+        r["ffc"].is_null() ? std::string("inf (no cohesion)")
+                           : fmt::format("{:.2f}", r["ffc"].get<double>()),
+        r["bulk_density_kg_m3"].get<double>(), r["measured"]["bulk_density_kg_m3"].get<double>());
+  fmt::print("wrote {}\n", (out / "shear_test.json").string());
+}
+
+// Writes the JSON, draws the figures (tools/silodem_shear.py) and prints; the tool's exit code.
+int finish(const nlohmann::json& doc, const fs::path& out, bool json) {
+  write_atomically((out / "shear_test.json").string(), {doc.dump(2) + "\n"}, false);
+  std::vector<std::string> tool_args = {out.string()};
+  if (json) tool_args.insert(tool_args.begin(), "--quiet");  // stdout is the JSON's
+  const int rc = run_tool("silodem_shear.py", tool_args, /*quiet_if_unavailable=*/true);
+  print_results(doc, out, json);
+  return rc;
+}
+
+void require_new_dir(const std::string& dir) {
+  const fs::path out(dir);
+  if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
+    throw InputError({}, "--out", fmt::format("'{}' exists and is not empty", dir));
+}
+
+// --refit: a finished test's series (series_<coal>.csv), pre-shear points (shear_test.json,
+// points.csv) and targets evaluated again by `spec.failure`, exactly as run_shear_test evaluates
+// its own rows; everything else is carried over.
+int refit_command(const ShearTestOptions& o, ShearTestSpec spec) {
+  const fs::path from(o.refit), out(o.out_dir);
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(read_text(from / "shear_test.json"));
+    const CsvTable points = read_csv_table((from / "points.csv").string());
+    const std::size_t c_coal = points.column("coal"), c_kind = points.column("kind"),
+                      c_point = points.column("point"), c_steady = points.column("steady");
+    std::vector<double> normals;
+    for (const auto& x : doc.at("normal_kpa")) normals.push_back(x.get<double>() * 1e3);
+    require_new_dir(o.out_dir);
+    fs::create_directories(out / "figures");
+    std::vector<ShearTestResult> results;
+    for (auto& j : doc.at("coals")) {
+      ShearTestResult r;
+      r.coal = j.at("coal").get<std::string>();
+      r.preshear = {j.at("preshear_kpa")[0].get<double>() * 1e3,
+                    j.at("preshear_kpa")[1].get<double>() * 1e3};
+      r.warnings = j.at("warnings").get<std::vector<std::string>>();
+      const CsvTable series =
+          read_csv_table((from / fmt::format("series_{}.csv", safe_name(r.coal))).string());
+      const std::size_t ct = series.column("time_s"), cph = series.column("phase"),
+                        cpt = series.column("point"), cg = series.column("strain"),
+                        cs = series.column("sigma_kpa"), ctau = series.column("tau_kpa"),
+                        ch = series.column("height_mm");
+      double largest_strain = 0;
+      for (std::size_t i = 0; i < series.rows.size(); ++i) {
+        const auto& row = series.rows[i];
+        r.series.push_back({row[cph], int(series.number(i, cpt)), series.number(i, ct),
+                            series.number(i, cg), series.number(i, cs) * 1e3,
+                            series.number(i, ctau) * 1e3, series.number(i, ch) * 1e-3});
+        if (row[cph] == "shear") largest_strain = std::max(largest_strain, r.series.back().strain);
+      }
+      // A test written before the JSON kept its failure strain had --failure-strain's.
+      spec.failure_strain = doc.value("failure_strain", o.failure_strain);
+      if (!(largest_strain >= spec.failure_strain))
+        throw InputError({}, "--failure-strain",
+                         fmt::format("{:g}: the series' longest shear reached only {:g}",
+                                     spec.failure_strain, largest_strain));
+      const auto& pre = j.at("preshear_points");
+      for (std::size_t k = 0; k < normals.size() && k < pre.size(); ++k) {
+        ShearPoint sp;
+        sp.sigma_target = normals[k];
+        sp.preshear = {pre[k][0].get<double>() * 1e3, pre[k][1].get<double>() * 1e3};
+        for (const auto& row : points.rows)
+          if (row[c_coal] == r.coal && row[c_kind] == "preshear" &&
+              row[c_point] == std::to_string(k + 1))
+            sp.preshear_steady = row[c_steady] == "1";
+        r.points.push_back(sp);
+      }
+      evaluate_failure(r, spec);
+      j.update(locus_json(r));
+      write_series(out / fmt::format("series_{}.csv", safe_name(r.coal)), r);
+      results.push_back(std::move(r));
+    }
+    write_points(out / "points.csv", results);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError({}, "--refit",
+                     fmt::format("'{}' does not hold a shear test's shear_test.json: {}",
+                                 from.string(), e.what()));
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e)) throw;
+    throw InputError({}, "--refit", e.what());
+  }
+  doc["failure_criterion"] = failure_criterion_name(spec.failure);
+  doc["refit_from"] = fs::absolute(from).lexically_normal().string();
+  return finish(doc, out, o.json);
+}
+
 }  // namespace
 
 int shear_test_command(const ShearTestOptions& o) {
   ShearTestSpec spec;
+  spec.failure = o.failure == "peak-tau" ? FailureCriterion::PeakTau : FailureCriterion::PeakRatio;
+  if (!o.refit.empty()) {
+    if (!o.case_path.empty() || !o.overrides.empty())
+      throw InputError({}, "--refit", "evaluates a finished test again: give no case and no --set");
+    return refit_command(o, spec);
+  }
+  if (o.case_path.empty()) throw InputError({}, "case", "a case file is needed (or --refit DIR)");
   spec.preshear = o.preshear_kpa * 1e3;
   if (!(spec.preshear > 0) || !std::isfinite(spec.preshear))
     throw InputError({}, "--preshear", fmt::format("{:g} kPa: must be positive", o.preshear_kpa));
@@ -167,8 +293,7 @@ int shear_test_command(const ShearTestOptions& o) {
                      fmt::format("'{}' is not a coal of the case ({})", o.coal, names));
   }
   const fs::path out(o.out_dir);
-  if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
-    throw InputError({}, "--out", fmt::format("'{}' exists and is not empty", o.out_dir));
+  require_new_dir(o.out_dir);
   fs::create_directories(out / "figures");
 
   std::vector<ShearTestResult> results;
@@ -194,30 +319,10 @@ int shear_test_command(const ShearTestOptions& o) {
                                  for (double s : spec.normals) v.push_back(s / 1e3);
                                  return v;
                                }()},
+                              {"failure_criterion", failure_criterion_name(spec.failure)},
+                              {"failure_strain", spec.failure_strain},
                               {"coals", all}};
-  const std::string text = doc.dump(2) + "\n";
-  write_atomically((out / "shear_test.json").string(), {text}, false);
-  std::vector<std::string> tool_args = {out.string()};
-  if (o.json) tool_args.insert(tool_args.begin(), "--quiet");  // stdout is the JSON's
-  const int rc = run_tool("silodem_shear.py", tool_args, /*quiet_if_unavailable=*/true);
-  if (o.json) {
-    fmt::print("{}", text);
-  } else {
-    for (const auto& r : all)
-      fmt::print(
-          "{}: C = {:.3f} kPa (measured {:.3f}), phi = {:.1f} deg (measured {:.1f}), f_c = "
-          "{:.3f} kPa, sigma_1 = {:.3f} kPa, ffc = {}, bulk density {:.0f} kg/m3 "
-          "(measured {:.0f})\n",
-          r["coal"].get<std::string>(), r["cohesion_kpa"].get<double>(),
-          r["measured"]["cohesion_kpa"].get<double>(), r["friction_angle_deg"].get<double>(),
-          r["measured"]["friction_angle_deg"].get<double>(),
-          r["unconfined_yield_kpa"].get<double>(), r["major_consolidation_kpa"].get<double>(),
-          r["ffc"].is_null() ? std::string("inf (no cohesion)")
-                             : fmt::format("{:.2f}", r["ffc"].get<double>()),
-          r["bulk_density_kg_m3"].get<double>(), r["measured"]["bulk_density_kg_m3"].get<double>());
-    fmt::print("wrote {}\n", (out / "shear_test.json").string());
-  }
-  return rc;
+  return finish(doc, out, o.json);
 }
 
 }  // namespace silodem::app

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 namespace silodem {
@@ -70,6 +71,61 @@ void CsvWriter::finish() {
     throw std::runtime_error("cannot finish " + path_ + ": " + std::strerror(errno));
   f_ = nullptr;
   std::filesystem::rename(path_ + ".partial", path_);
+}
+
+namespace {
+std::vector<std::string> split_cells(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t a = 0;
+  for (;;) {
+    const std::size_t b = line.find(',', a);
+    cells.push_back(line.substr(a, b == std::string::npos ? std::string::npos : b - a));
+    if (b == std::string::npos) return cells;
+    a = b + 1;
+  }
+}
+}  // namespace
+
+CsvTable read_csv_table(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(fmt::format("cannot open '{}'", path));
+  CsvTable t;
+  t.path = path;
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(fmt::format("'{}' is empty", path));
+  t.header = split_cells(line);
+  for (int n = 2; std::getline(in, line); ++n) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    auto cells = split_cells(line);
+    if (cells.size() != t.header.size())
+      throw std::runtime_error(fmt::format("{}:{}: {} cells, the header has {}", path, n,
+                                           cells.size(), t.header.size()));
+    t.rows.push_back(std::move(cells));
+    t.lines.push_back(n);
+  }
+  return t;
+}
+
+std::size_t CsvTable::column(const std::string& name) const {
+  for (std::size_t k = 0; k < header.size(); ++k)
+    if (header[k] == name) return k;
+  throw std::runtime_error(fmt::format("'{}' has no column '{}'", path, name));
+}
+
+double CsvTable::number(std::size_t row, std::size_t col) const {
+  const std::string& cell = rows.at(row).at(col);
+  std::size_t used = 0;
+  double x = 0;
+  try {
+    x = std::stod(cell, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (cell.empty() || used != cell.size())
+    throw std::runtime_error(fmt::format("{}:{}: '{}' in column '{}' is not a number", path,
+                                         lines.at(row), cell, header.at(col)));
+  return x;
 }
 
 }  // namespace silodem

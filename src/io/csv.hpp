@@ -34,4 +34,18 @@ class CsvWriter {
   std::size_t ncol_ = 0;
 };
 
+// A CSV file as this program writes it (a header line, no quoting): the header's column names
+// and each later non-empty line's cells. column() finds a column by name. Errors (a missing file,
+// a missing column, a row with another number of cells) throw std::runtime_error naming the file
+// and line.
+struct CsvTable {
+  std::string path;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  std::vector<int> lines;  // each row's line in the file
+  std::size_t column(const std::string& name) const;
+  double number(std::size_t row, std::size_t col) const;  // throws naming file:line
+};
+CsvTable read_csv_table(const std::string& path);
+
 }  // namespace silodem

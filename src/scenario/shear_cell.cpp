@@ -278,29 +278,41 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
     sp.preshear = preshear_end(rows, sp.preshear_steady);
     pre_sum.sigma += sp.preshear.sigma, pre_sum.tau += sp.preshear.tau, ++n_pre;
     hold("relax", point, sigma);
-    auto [fr, fg] = shear("shear", point, sigma, spec.failure_strain);
-    // The peak of the three-row moving mean (1.5% strain at the default rows).
-    double best = -1e300;
-    for (std::size_t i = 0; i < fr.size(); ++i) {
-      const std::size_t i0 = i > 0 ? i - 1 : 0, i1 = std::min(fr.size() - 1, i + 1);
-      double t = 0, sg = 0;
-      for (std::size_t j = i0; j <= i1; ++j) t += fr[j].tau, sg += fr[j].sigma;
-      t /= double(i1 - i0 + 1), sg /= double(i1 - i0 + 1);
-      if (t > best) best = t, sp.tau = t, sp.sigma = sg, sp.strain_at_peak = fg[i];
-    }
-    if (sp.strain_at_peak > 0.95 * spec.failure_strain)
-      res.warnings.push_back(
-          fmt::format("shear at {:g} kPa: no peak before the end of the shear "
-                      "(strain {:g}); its largest shear stress is used",
-                      sigma / 1e3, spec.failure_strain));
+    shear("shear", point, sigma, spec.failure_strain);
     res.points.push_back(sp);
   }
   res.preshear = {pre_sum.sigma / n_pre, pre_sum.tau / n_pre};
-  std::vector<StressPoint> failure;
-  for (const auto& sp : res.points) failure.push_back({sp.sigma, sp.tau});
-  res.locus = fit_yield_locus(failure, res.preshear);
+  evaluate_failure(res, spec);
   res.steps = S.step_count();
   return res;
+}
+
+void evaluate_failure(ShearTestResult& r, const ShearTestSpec& spec) {
+  const std::string no_peak = "no peak before the end of the shear";
+  std::erase_if(r.warnings,
+                [&](const std::string& w) { return w.find(no_peak) != std::string::npos; });
+  std::vector<StressPoint> failure;
+  for (std::size_t k = 0; k < r.points.size(); ++k) {
+    ShearPoint& sp = r.points[k];
+    std::vector<StressPoint> rows;
+    std::vector<double> strains;
+    for (const auto& row : r.series)
+      if (row.phase == "shear" && row.point == int(k) + 1)
+        rows.push_back({row.sigma, row.tau}), strains.push_back(row.strain);
+    if (rows.empty())
+      throw SimulationError(fmt::format("shear test: no shear rows for the point at {:g} kPa",
+                                        sp.sigma_target / 1e3));
+    const FailurePick pick = pick_failure(rows, spec.failure);
+    sp.sigma = pick.point.sigma, sp.tau = pick.point.tau;
+    sp.strain_at_peak = strains[pick.row];
+    if (sp.strain_at_peak > 0.95 * spec.failure_strain)
+      r.warnings.push_back(
+          fmt::format("shear at {:g} kPa: {} (strain {:g}); its largest {} is used",
+                      sp.sigma_target / 1e3, no_peak, spec.failure_strain,
+                      spec.failure == FailureCriterion::PeakTau ? "shear stress" : "tau / sigma"));
+    failure.push_back(pick.point);
+  }
+  r.locus = fit_yield_locus(failure, r.preshear);
 }
 
 }  // namespace silodem

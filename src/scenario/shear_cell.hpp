@@ -10,7 +10,9 @@
 // sample along x at a constant speed (set by an inertial number, GDR MiDi 2004: quasi-static
 // below about 1e-3) while the servo holds the normal stress. The procedure is the standard one:
 // pre-shear to steady state at the pre-shear stress; then for each lower normal stress, pre-shear
-// again, stop, lower the normal stress, and shear to failure, recording the peak shear stress.
+// again, stop, lower the normal stress, and shear to failure; the failure point is where the
+// mobilised friction tau / sigma peaks (or, as before 2026-12-05, the shear stress:
+// yield_locus.hpp's FailureCriterion says why).
 // Gravity is off in the cell: the plates set the stress (at 3 kPa the weight of an 8-diameter
 // k = 3 sample would add about 1 kPa from top to bottom).
 #pragma once
@@ -34,6 +36,7 @@ struct ShearTestSpec {
   double represhear_strain = 0.2;  // each later pre-shear
   double failure_strain = 0.25;    // each shear to failure
   double sample_strain = 0.005;    // strain per row of the series
+  FailureCriterion failure = FailureCriterion::PeakRatio;
   std::uint64_t seed = 1;
   int threads = 0;
 };
@@ -78,6 +81,13 @@ void check_shear_spec(const ShearTestSpec& spec);
 
 // Runs the test on coal `coal` of the case (report and model from derive_case); checks the spec
 // first.
+// The failure points and the yield locus from the series: each point's shear rows (phase
+// "shear") give its failure point by spec.failure, and the locus is fitted through them with
+// r.preshear. Replaces the warnings about a shear without a peak. r.points must hold one point
+// (sigma_target, preshear) per shear in the series. run_shear_test ends with it; `shear-test
+// --refit` applies it to a recorded series with another criterion.
+void evaluate_failure(ShearTestResult& r, const ShearTestSpec& spec);
+
 ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
                                const ContactModel& model, int coal, const ShearTestSpec& spec,
                                const ShearProgress& progress);

@@ -1,11 +1,32 @@
 // SPDX-License-Identifier: MIT
 #include "scenario/yield_locus.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
 namespace silodem {
+
+FailurePick pick_failure(const std::vector<StressPoint>& rows, FailureCriterion criterion) {
+  FailurePick pick;
+  double best = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::size_t i0 = i > 0 ? i - 1 : 0, i1 = std::min(rows.size() - 1, i + 1);
+    StressPoint m;
+    for (std::size_t j = i0; j <= i1; ++j) m.sigma += rows[j].sigma, m.tau += rows[j].tau;
+    m.sigma /= double(i1 - i0 + 1), m.tau /= double(i1 - i0 + 1);
+    double key = m.tau;
+    if (criterion == FailureCriterion::PeakRatio)
+      key = m.sigma > 0 ? m.tau / m.sigma : -std::numeric_limits<double>::infinity();
+    if (i == 0 || key > best) best = key, pick.point = m, pick.row = i;
+  }
+  return pick;
+}
+
+const char* failure_criterion_name(FailureCriterion c) {
+  return c == FailureCriterion::PeakTau ? "peak-tau" : "peak-ratio";
+}
 
 YieldLocus fit_yield_locus(const std::vector<StressPoint>& pts, const StressPoint& pre) {
   const double n = double(pts.size());

@@ -5,6 +5,7 @@
 // origin tangent to the locus), the major consolidation stress sigma_1 (the circle through the
 // pre-shear point tangent to the locus) and the flow function ffc = sigma_1 / f_c.
 #pragma once
+#include <cstddef>
 #include <vector>
 
 namespace silodem {
@@ -31,6 +32,26 @@ struct YieldLocus {
                                       // principal stress of the pre-shear point's own circle
                                       // centred on the sigma axis with tau_pre as its radius
 };
+
+// Where a shear to failure failed (scenario/shear_cell.hpp's rows, one per strain step). The
+// FT-4 holds the normal stress while it shears; the cell's servo holds its mean, but in a cell of
+// about a thousand parcels the normal stress swings by tens of percent as force chains form and
+// buckle, and the shear stress swings with it (tau / sigma much less). So the largest shear
+// stress of a shear (PeakTau) picks the largest swing of sigma, more for stiffer contacts, whose
+// swings are larger; the largest mobilised friction tau / sigma (PeakRatio, the default) picks
+// the material's peak at the normal stress it had there. Both use the three-row moving means of
+// tau and sigma and give that window's mean (sigma, tau) as the failure point.
+enum class FailureCriterion { PeakRatio, PeakTau };
+
+struct FailurePick {
+  StressPoint point;    // the window's mean sigma and tau (Pa)
+  std::size_t row = 0;  // the window's centre row
+};
+
+// rows: the shear's (sigma, tau), at least one row; sigma > 0 in every row for PeakRatio (a
+// row with sigma <= 0 is never picked by it).
+FailurePick pick_failure(const std::vector<StressPoint>& rows, FailureCriterion criterion);
+const char* failure_criterion_name(FailureCriterion c);  // peak-ratio | peak-tau
 
 // Least squares over at least two points with distinct sigma (throws std::invalid_argument).
 YieldLocus fit_yield_locus(const std::vector<StressPoint>& failure, const StressPoint& preshear);

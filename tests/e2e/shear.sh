@@ -50,6 +50,32 @@ phases = {x["phase"] for x in series}
 assert {"compress", "consolidate", "preshear", "relax", "shear"} <= phases, phases
 PY
 
+# --refit evaluates the recorded series again without running: with the criterion the test used
+# (peak-ratio, the default) it gives the same points and locus; with peak-tau each failure point's
+# shear stress is at least peak-ratio's (the largest tau of the same windows).
+"$bin" shear-test --refit "$work/st" --out "$work/rf-ratio" > /dev/null 2> "$work/rf.err" ||
+  bad "refit exited $?: $(cat "$work/rf.err")"
+"$bin" shear-test --refit "$work/st" --failure peak-tau --out "$work/rf-tau" > /dev/null 2>> "$work/rf.err" ||
+  bad "refit --failure peak-tau exited $?: $(cat "$work/rf.err")"
+/usr/bin/python3 - "$work" <<'PY' || fail=1
+import json, sys
+w = sys.argv[1]
+run, same, tau = (json.load(open(f"{w}/{d}/shear_test.json")) for d in ("st", "rf-ratio", "rf-tau"))
+assert run["failure_criterion"] == "peak-ratio" and tau["failure_criterion"] == "peak-tau"
+assert same["refit_from"].endswith("/st"), same["refit_from"]
+a, b, c = run["coals"][0], same["coals"][0], tau["coals"][0]
+for (s1, t1), (s2, t2) in zip(a["yield_locus"], b["yield_locus"]):
+    assert abs(s1 - s2) <= 1e-12 * s1 and abs(t1 - t2) <= 1e-12 * abs(t1), (s1, t1, s2, t2)
+assert abs(a["cohesion_kpa"] - b["cohesion_kpa"]) < 1e-9 and abs(a["friction_angle_deg"] - b["friction_angle_deg"]) < 1e-9
+for (s1, t1), (s2, t2) in zip(a["yield_locus"], c["yield_locus"]):
+    assert t2 >= t1 - 1e-12, (t1, t2)
+assert a["bulk_density_kg_m3"] == c["bulk_density_kg_m3"]
+PY
+"$bin" shear-test --refit "$work/st" --out "$work/rf-bad" "$case_file" > /dev/null 2> "$work/e.txt"
+[ $? = 2 ] && grep -q -- "--refit" "$work/e.txt" || bad "refit with a case: $(cat "$work/e.txt")"
+"$bin" shear-test --refit "$work" --out "$work/rf-bad2" > /dev/null 2> "$work/e.txt"
+[ $? = 2 ] && grep -q "shear_test.json" "$work/e.txt" || bad "refit of a directory without a test: $(cat "$work/e.txt")"
+
 # Bad input: exit 2, one line naming the option and the value.
 expect_input_error() {
   local what=$1 needle=$2

@@ -56,5 +56,31 @@ TEST(YieldLocus, RefusesFewerThanTwoDistinctStresses) {
   EXPECT_THROW(fit_yield_locus({{3e3, 1e3}, {3e3, 1.2e3}}, {9e3, 3e3}), std::invalid_argument);
 }
 
+// A shear whose normal stress swings (the small cell's servo, yield_locus.hpp): the material
+// holds tau / sigma = 0.40 at its peak (rows 10-12) and 0.30 elsewhere, and one swing at rows
+// 4-6 doubles sigma. The largest shear stress is the swing's (PeakTau); the largest mobilised
+// friction is the peak's (PeakRatio). Each gives its three-row window's mean.
+TEST(FailurePick, PeakRatioFindsTheMaterialPeakAndPeakTauTheLargestSwing) {
+  std::vector<StressPoint> rows(20, StressPoint{5e3, 0.30 * 5e3});
+  for (int i : {4, 5, 6}) rows[std::size_t(i)] = {10e3, 0.30 * 10e3};
+  for (int i : {10, 11, 12}) rows[std::size_t(i)] = {5e3, 0.40 * 5e3};
+  const FailurePick tau = pick_failure(rows, FailureCriterion::PeakTau);
+  EXPECT_EQ(tau.row, 5u);
+  EXPECT_NEAR(tau.point.sigma, 10e3, 1e-9);
+  EXPECT_NEAR(tau.point.tau, 3e3, 1e-9);
+  const FailurePick ratio = pick_failure(rows, FailureCriterion::PeakRatio);
+  EXPECT_EQ(ratio.row, 11u);
+  EXPECT_NEAR(ratio.point.sigma, 5e3, 1e-9);
+  EXPECT_NEAR(ratio.point.tau, 2e3, 1e-9);
+  // A window at the ends has two rows: the mean of rows 0-1.
+  std::vector<StressPoint> rising{{4e3, 2e3}, {6e3, 2e3}, {5e3, 1e3}, {5e3, 1e3}};
+  const FailurePick first = pick_failure(rising, FailureCriterion::PeakRatio);
+  EXPECT_EQ(first.row, 0u);
+  EXPECT_NEAR(first.point.sigma, 5e3, 1e-9);
+  EXPECT_NEAR(first.point.tau, 2e3, 1e-9);
+  EXPECT_STREQ(failure_criterion_name(FailureCriterion::PeakRatio), "peak-ratio");
+  EXPECT_STREQ(failure_criterion_name(FailureCriterion::PeakTau), "peak-tau");
+}
+
 }  // namespace
 }  // namespace silodem
