@@ -140,7 +140,20 @@ int calibrate_command(const CalibrateOptions& o) {
   }
 
   const fs::path out(o.out_dir);
+  // Evaluation jobs: the run directory of the value x with seed s.
+  auto job_at = [&](double x, int seed) {
+    RunJob j;
+    j.name = fmt::format("x={}_seed={}", path_safe(toml_number(x)), seed);
+    j.dir = out / "runs" / j.name;
+    j.case_path = case_abs;
+    j.overrides = overrides_at(x, seed);
+    return j;
+  };
   JobRunner::lock(out);
+  // The first evaluations' runs hold another case (by content) or other --set values: refused
+  // before search.txt and calibration.json are written, so they keep describing the search.
+  for (const double x : {lo, hi})
+    for (int s = 1; s <= o.seeds; ++s) check_run_matches(job_at(x, s), "calibration");
   {  // The same search only: another command line in this DIR would mix two searches. The case
      // is compared by content, run by run (check_run_matches), not by its path: a copy of the
      // case at another path (a frozen base) continues the search. search.txt records the path.
@@ -207,11 +220,7 @@ int calibrate_command(const CalibrateOptions& o) {
       Evaluation ev;
       ev.x = x;
       for (int s = 1; s <= o.seeds; ++s) {
-        RunJob j;
-        j.name = fmt::format("x={}_seed={}", path_safe(toml_number(x)), s);
-        j.dir = out / "runs" / j.name;
-        j.case_path = case_abs;
-        j.overrides = overrides_at(x, s);
+        const RunJob j = job_at(x, s);
         check_run_matches(j, "calibration");
         ev.jobs.push_back(j);
         jobs.push_back(j);

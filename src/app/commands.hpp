@@ -66,7 +66,8 @@ struct ShearTestOptions {
   double inertial_number = 2e-3;
   double preshear_strain = 0.5, represhear_strain = 0.2, failure_strain = 0.25;
   std::string failure = "peak-ratio";  // the failure point of a shear: peak-ratio | peak-tau
-  std::string refit;  // a finished shear test's DIR: its series evaluated again (no case)
+  std::string refit;                  // a finished test's DIR: its series evaluated again (no case)
+  bool failure_strain_given = false;  // --failure-strain on the command line
   std::vector<std::string> overrides;
 };
 

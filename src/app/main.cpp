@@ -10,6 +10,10 @@
 int main(int argc, char** argv) {
   using namespace silodem;
   CLI::App cli{"silodem - coarse-grained DEM of wet coal discharging from silos"};
+  // Bad input is one line, as every other error: without CLI11's "Run with --help" line.
+  cli.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("error: ") + e.what() + "\n";
+  });
   cli.require_subcommand(1);
 
   app::RunOptions run;
@@ -200,12 +204,21 @@ int main(int argc, char** argv) {
                    "failure point of each shear: peak-ratio (largest tau / sigma, default) or "
                    "peak-tau (largest tau, before 2026-12-05)")
       ->check(CLI::IsMember({"peak-ratio", "peak-tau"}));
-  shear_cmd
-      ->add_option("--refit", shear.refit,
-                   "evaluate a finished shear test's DIR again from its series (with --failure): "
-                   "failure points, yield locus and figure, written to --out; no case, no run")
-      ->check(CLI::ExistingDirectory);
-  shear_cmd->add_option("--set", shear.overrides, "override a case-file value (repeatable)");
+  auto* set_opt =
+      shear_cmd->add_option("--set", shear.overrides, "override a case-file value (repeatable)");
+  auto* refit_opt =
+      shear_cmd
+          ->add_option("--refit", shear.refit,
+                       "evaluate a finished shear test's DIR again from its series (with "
+                       "--failure): failure points, yield locus and figure, written to --out; "
+                       "no case, no run")
+          ->check(CLI::ExistingDirectory);
+  // What a refit cannot change: the test was run with its own values of these.
+  for (const char* name :
+       {"--preshear", "--normal", "--coal", "--threads", "--seed", "--width", "--height",
+        "--inertial-number", "--preshear-strain", "--represhear-strain"})
+    refit_opt->excludes(shear_cmd->get_option(name));
+  refit_opt->excludes(set_opt);
 
   auto* docs_cmd =
       cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");
@@ -239,7 +252,10 @@ int main(int argc, char** argv) {
       if (cal.threads == 0) cal.threads = app::default_threads();
       return app::calibrate_command(cal);
     }
-    if (*shear_cmd) return app::shear_test_command(shear);
+    if (*shear_cmd) {
+      shear.failure_strain_given = shear_cmd->count("--failure-strain") > 0;
+      return app::shear_test_command(shear);
+    }
     if (*report_cmd) return app::report_command(report_dir);
     if (*bench_cmd) return app::bench_command(bench);
     if (*compare_cmd) return app::compare_command(compare_dirs, compare_out, compare_labels);

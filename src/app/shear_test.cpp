@@ -8,6 +8,7 @@
 // (the same evaluation as a run's, so the same trajectory gives the same points), running nothing.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -180,10 +181,13 @@ void require_new_dir(const std::string& dir) {
 
 // --refit: a finished test's series (series_<coal>.csv), pre-shear points (shear_test.json,
 // points.csv) and targets evaluated again by `spec.failure`, exactly as run_shear_test evaluates
-// its own rows; everything else is carried over.
+// its own rows; everything else is carried over. Everything is read and evaluated before DIR is
+// made, so a refused refit leaves nothing.
 int refit_command(const ShearTestOptions& o, ShearTestSpec spec) {
   const fs::path from(o.refit), out(o.out_dir);
+  require_new_dir(o.out_dir);
   nlohmann::json doc;
+  std::vector<ShearTestResult> results;
   try {
     doc = nlohmann::json::parse(read_text(from / "shear_test.json"));
     const CsvTable points = read_csv_table((from / "points.csv").string());
@@ -191,15 +195,19 @@ int refit_command(const ShearTestOptions& o, ShearTestSpec spec) {
                       c_point = points.column("point"), c_steady = points.column("steady");
     std::vector<double> normals;
     for (const auto& x : doc.at("normal_kpa")) normals.push_back(x.get<double>() * 1e3);
-    require_new_dir(o.out_dir);
-    fs::create_directories(out / "figures");
-    std::vector<ShearTestResult> results;
+    // A test written before the JSON kept its failure strain had --failure-strain's.
+    spec.failure_strain = doc.value("failure_strain", o.failure_strain);
+    if (o.failure_strain_given && spec.failure_strain != o.failure_strain)
+      throw InputError({}, "--failure-strain",
+                       fmt::format("{:g}: '{}' was sheared to {:g} (its shear_test.json)",
+                                   o.failure_strain, from.string(), spec.failure_strain));
     for (auto& j : doc.at("coals")) {
       ShearTestResult r;
       r.coal = j.at("coal").get<std::string>();
-      r.preshear = {j.at("preshear_kpa")[0].get<double>() * 1e3,
-                    j.at("preshear_kpa")[1].get<double>() * 1e3};
-      r.warnings = j.at("warnings").get<std::vector<std::string>>();
+      r.preshear = {j.at("preshear_kpa").at(0).get<double>() * 1e3,
+                    j.at("preshear_kpa").at(1).get<double>() * 1e3};
+      for (const auto& w : j.at("warnings").get<std::vector<std::string>>())
+        if (w.find(kNoPeakWarning) == std::string::npos) r.warnings.push_back(w);
       const CsvTable series =
           read_csv_table((from / fmt::format("series_{}.csv", safe_name(r.coal))).string());
       const std::size_t ct = series.column("time_s"), cph = series.column("phase"),
@@ -214,17 +222,19 @@ int refit_command(const ShearTestOptions& o, ShearTestSpec spec) {
                             series.number(i, ctau) * 1e3, series.number(i, ch) * 1e-3});
         if (row[cph] == "shear") largest_strain = std::max(largest_strain, r.series.back().strain);
       }
-      // A test written before the JSON kept its failure strain had --failure-strain's.
-      spec.failure_strain = doc.value("failure_strain", o.failure_strain);
       if (!(largest_strain >= spec.failure_strain))
         throw InputError({}, "--failure-strain",
-                         fmt::format("{:g}: the series' longest shear reached only {:g}",
-                                     spec.failure_strain, largest_strain));
+                         fmt::format("{:g}: the longest shear of {} in '{}' reached only {:g}",
+                                     spec.failure_strain, r.coal, from.string(), largest_strain));
       const auto& pre = j.at("preshear_points");
-      for (std::size_t k = 0; k < normals.size() && k < pre.size(); ++k) {
+      if (pre.size() != normals.size())
+        throw InputError({}, "--refit",
+                         fmt::format("'{}': {} has {} pre-shear points for {} normal stresses",
+                                     from.string(), r.coal, pre.size(), normals.size()));
+      for (std::size_t k = 0; k < normals.size(); ++k) {
         ShearPoint sp;
         sp.sigma_target = normals[k];
-        sp.preshear = {pre[k][0].get<double>() * 1e3, pre[k][1].get<double>() * 1e3};
+        sp.preshear = {pre.at(k).at(0).get<double>() * 1e3, pre.at(k).at(1).get<double>() * 1e3};
         for (const auto& row : points.rows)
           if (row[c_coal] == r.coal && row[c_kind] == "preshear" &&
               row[c_point] == std::to_string(k + 1))
@@ -233,19 +243,23 @@ int refit_command(const ShearTestOptions& o, ShearTestSpec spec) {
       }
       evaluate_failure(r, spec);
       j.update(locus_json(r));
-      write_series(out / fmt::format("series_{}.csv", safe_name(r.coal)), r);
       results.push_back(std::move(r));
     }
-    write_points(out / "points.csv", results);
   } catch (const nlohmann::json::exception& e) {
     throw InputError({}, "--refit",
                      fmt::format("'{}' does not hold a shear test's shear_test.json: {}",
                                  from.string(), e.what()));
-  } catch (const std::runtime_error& e) {
-    if (dynamic_cast<const InputError*>(&e)) throw;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& e) {  // a file, a cell, a failed evaluation
     throw InputError({}, "--refit", e.what());
   }
+  fs::create_directories(out / "figures");
+  for (const auto& r : results)
+    write_series(out / fmt::format("series_{}.csv", safe_name(r.coal)), r);
+  write_points(out / "points.csv", results);
   doc["failure_criterion"] = failure_criterion_name(spec.failure);
+  doc["failure_strain"] = spec.failure_strain;
   doc["refit_from"] = fs::absolute(from).lexically_normal().string();
   return finish(doc, out, o.json);
 }
@@ -256,8 +270,8 @@ int shear_test_command(const ShearTestOptions& o) {
   ShearTestSpec spec;
   spec.failure = o.failure == "peak-tau" ? FailureCriterion::PeakTau : FailureCriterion::PeakRatio;
   if (!o.refit.empty()) {
-    if (!o.case_path.empty() || !o.overrides.empty())
-      throw InputError({}, "--refit", "evaluates a finished test again: give no case and no --set");
+    if (!o.case_path.empty())
+      throw InputError({}, "--refit", "evaluates a finished test again: give no case");
     return refit_command(o, spec);
   }
   if (o.case_path.empty()) throw InputError({}, "case", "a case file is needed (or --refit DIR)");

@@ -93,6 +93,7 @@ CsvTable read_csv_table(const std::string& path) {
   t.path = path;
   std::string line;
   if (!std::getline(in, line)) throw std::runtime_error(fmt::format("'{}' is empty", path));
+  if (!line.empty() && line.back() == '\r') line.pop_back();
   t.header = split_cells(line);
   for (int n = 2; std::getline(in, line); ++n) {
     if (!line.empty() && line.back() == '\r') line.pop_back();

@@ -8,8 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "model/contact/cohesion_common.hpp"
-
 namespace silodem {
 
 namespace {
@@ -43,33 +41,6 @@ std::vector<PerCoalValue> per_coal_values(const Case& c) {
                  b >= 0 ? c.coals[std::size_t(b)].name : std::string(),
                  std::string(slot_name(Slot(s))) + "." + key, slots[s]->values.number(key)});
         }
-      }
-  }
-  return out;
-}
-
-// The moisture force each pair kind gets from a cohesion law of the common family
-// (cohesion_common.hpp: factor, pair rule or wall_factor on F_L,cg), as the contact model builds
-// it; a cohesion law without a `factor` (none; adhesion inside the normal law) has no row.
-struct AppliedCohesion {
-  std::string section, coal_a, coal_b, law;  // coal_b empty: a wall contact
-  double force = 0.0;                        // N
-};
-
-std::vector<AppliedCohesion> applied_cohesion(const Case& c, const CaseReport& r) {
-  std::vector<AppliedCohesion> out;
-  const int n = int(std::min(c.coals.size(), r.coals.size()));
-  for (const auto* spec : {&c.particle_particle, &c.particle_wall}) {
-    const bool wall = spec == &c.particle_wall;
-    for (int a = 0; a < n; ++a)
-      for (int b = wall ? -1 : a; b < (wall ? 0 : n); ++b) {
-        const SlotChoice m = spec_for(*spec, a, b).cohesion;
-        if (!m.values.has("factor")) continue;
-        const LawContext ctx{nullptr, r.coals[std::size_t(a)].cohesion_cg,
-                             b >= 0 ? r.coals[std::size_t(b)].cohesion_cg : 0.0, wall, nullptr};
-        out.push_back({wall ? "particle_wall" : "particle_particle", c.coals[std::size_t(a)].name,
-                       b >= 0 ? c.coals[std::size_t(b)].name : std::string(), m.law,
-                       cohesion_pair_force(m.values, ctx)});
       }
   }
   return out;
@@ -134,11 +105,13 @@ std::string case_report_json(const Case& c, const CaseReport& r) {
     root.insert("contact_per_coal", std::move(rows));
   }
   toml::array applied;
-  for (const auto& v : applied_cohesion(c, r)) {
-    toml::array coals{v.coal_a};
-    if (!v.coal_b.empty()) coals.push_back(v.coal_b);
-    applied.push_back(toml::table{
-        {"section", v.section}, {"coals", std::move(coals)}, {"law", v.law}, {"force_n", v.force}});
+  for (const auto& v : r.cohesion_applied) {
+    toml::array coals{c.coals[std::size_t(v.coal_a)].name};
+    if (v.coal_b >= 0) coals.push_back(c.coals[std::size_t(v.coal_b)].name);
+    applied.push_back(toml::table{{"section", v.coal_b < 0 ? "particle_wall" : "particle_particle"},
+                                  {"coals", std::move(coals)},
+                                  {"law", v.law},
+                                  {"force_n", v.force}});
   }
   root.insert("cohesion_applied", std::move(applied));
   if (c.silo.present) {
@@ -185,14 +158,15 @@ std::string case_report_text(const Case& c, const CaseReport& r) {
           fmt::format("  {} {:<28} {:<32} {:.6g}\n", v.section == "particle_wall" ? "wall" : "pair",
                       v.coal_b.empty() ? v.coal_a : v.coal_a + "-" + v.coal_b, v.key, v.value);
   }
-  const auto applied = applied_cohesion(c, r);
-  if (!applied.empty()) {
+  if (!r.cohesion_applied.empty()) {
     s += "moisture force per contact, as applied (cohesion.factor x F_L,cg: pair_rule between two "
          "coals, wall_factor at a wall)\n";
-    for (const auto& v : applied)
-      s += fmt::format("  {} {:<28} {:.4e} N  ({})\n",
-                       v.section == "particle_wall" ? "wall" : "pair",
-                       v.coal_b.empty() ? v.coal_a : v.coal_a + "-" + v.coal_b, v.force, v.law);
+    for (const auto& v : r.cohesion_applied) {
+      const std::string& a = c.coals[std::size_t(v.coal_a)].name;
+      s += fmt::format("  {} {:<28} {:.4e} N  ({})\n", v.coal_b < 0 ? "wall" : "pair",
+                       v.coal_b < 0 ? a : a + "-" + c.coals[std::size_t(v.coal_b)].name, v.force,
+                       v.law);
+    }
   }
   s += fmt::format("shortest collision t_col {:.4e} s; time step {:.4e} s; t_col / dt = {:.1f}\n",
                    r.collision_time_min, r.time_step, r.collision_time_min / r.time_step);

@@ -59,6 +59,13 @@ CaseReport derive_case(const ScenarioCase& c, ContactModel* model_out) {
   }
   ContactModel model =
       ContactModel::build(c.particle_particle, c.particle_wall, cohesion_cg, c.cg, &r.warnings);
+  auto applied = [&](int a, int b, const ContactLaw& law) {
+    const double f = applied_cohesion_force(law);
+    if (!std::isnan(f)) r.cohesion_applied.push_back({a, b, law.law_names[int(Slot::Cohesion)], f});
+  };
+  for (int a = 0; a < model.materials(); ++a)
+    for (int b = a; b < model.materials(); ++b) applied(a, b, model.pair(a, b));
+  for (int a = 0; a < model.materials(); ++a) applied(a, -1, model.wall(a));
 
   // Sizes present: the coals' CG particles and any explicitly sized particle.
   std::vector<double> min_mass(c.coals.size(), 0.0), min_radius(c.coals.size(), 0.0);

@@ -31,8 +31,17 @@ struct SegmentPlan {
   double mass = 0.0;  // measured bulk density x volume (kg)
 };
 
+// The moisture force one kind of contact gets, as the contact model applies it.
+struct AppliedCohesion {
+  int coal_a = 0, coal_b = -1;  // coal_b < 0: a contact with a wall
+  std::string law;              // the cohesion law
+  double force = 0.0;           // N (cohesion.factor, pair rule or wall_factor applied)
+};
+
 struct CaseReport {
   std::vector<CoalReport> coals;
+  // Each coal pair (a <= b) and each coal at a wall whose cohesion law has a force.
+  std::vector<AppliedCohesion> cohesion_applied;
   double k = 1.0;
   double collision_time_min = 0.0;  // smallest t_col over all pair kinds and sizes present
   double time_step = 0.0;

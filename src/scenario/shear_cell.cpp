@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include "core/constants.hpp"
 #include "core/error.hpp"
@@ -288,9 +289,6 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
 }
 
 void evaluate_failure(ShearTestResult& r, const ShearTestSpec& spec) {
-  const std::string no_peak = "no peak before the end of the shear";
-  std::erase_if(r.warnings,
-                [&](const std::string& w) { return w.find(no_peak) != std::string::npos; });
   std::vector<StressPoint> failure;
   for (std::size_t k = 0; k < r.points.size(); ++k) {
     ShearPoint& sp = r.points[k];
@@ -302,17 +300,27 @@ void evaluate_failure(ShearTestResult& r, const ShearTestSpec& spec) {
     if (rows.empty())
       throw SimulationError(fmt::format("shear test: no shear rows for the point at {:g} kPa",
                                         sp.sigma_target / 1e3));
-    const FailurePick pick = pick_failure(rows, spec.failure);
+    FailurePick pick;
+    try {
+      pick = pick_failure(rows, spec.failure);
+    } catch (const std::invalid_argument& e) {
+      throw SimulationError(
+          fmt::format("shear test: the shear at {:g} kPa: {}", sp.sigma_target / 1e3, e.what()));
+    }
     sp.sigma = pick.point.sigma, sp.tau = pick.point.tau;
     sp.strain_at_peak = strains[pick.row];
     if (sp.strain_at_peak > 0.95 * spec.failure_strain)
       r.warnings.push_back(
           fmt::format("shear at {:g} kPa: {} (strain {:g}); its largest {} is used",
-                      sp.sigma_target / 1e3, no_peak, spec.failure_strain,
+                      sp.sigma_target / 1e3, kNoPeakWarning, spec.failure_strain,
                       spec.failure == FailureCriterion::PeakTau ? "shear stress" : "tau / sigma"));
     failure.push_back(pick.point);
   }
-  r.locus = fit_yield_locus(failure, r.preshear);
+  try {
+    r.locus = fit_yield_locus(failure, r.preshear);
+  } catch (const std::invalid_argument& e) {
+    throw SimulationError(std::string("shear test: ") + e.what());
+  }
 }
 
 }  // namespace silodem

@@ -79,15 +79,17 @@ using ShearProgress = std::function<void(const std::string&)>;
 // in (0, pre-shear).
 void check_shear_spec(const ShearTestSpec& spec);
 
-// Runs the test on coal `coal` of the case (report and model from derive_case); checks the spec
-// first.
 // The failure points and the yield locus from the series: each point's shear rows (phase
 // "shear") give its failure point by spec.failure, and the locus is fitted through them with
-// r.preshear. Replaces the warnings about a shear without a peak. r.points must hold one point
-// (sigma_target, preshear) per shear in the series. run_shear_test ends with it; `shear-test
-// --refit` applies it to a recorded series with another criterion.
+// r.preshear. Adds a warning (containing kNoPeakWarning) for each shear without a peak before
+// 95% of spec.failure_strain. r.points must hold one point (sigma_target, preshear) per shear in
+// the series; throws SimulationError if a point has no rows or no row with sigma > 0.
+// run_shear_test ends with it; `shear-test --refit` applies it to a recorded series.
 void evaluate_failure(ShearTestResult& r, const ShearTestSpec& spec);
+inline constexpr const char* kNoPeakWarning = "no peak before the end of the shear";
 
+// Runs the test on coal `coal` of the case (report and model from derive_case); checks the spec
+// first.
 ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
                                const ContactModel& model, int coal, const ShearTestSpec& spec,
                                const ShearProgress& progress);

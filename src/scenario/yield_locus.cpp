@@ -10,17 +10,22 @@ namespace silodem {
 
 FailurePick pick_failure(const std::vector<StressPoint>& rows, FailureCriterion criterion) {
   FailurePick pick;
-  double best = -std::numeric_limits<double>::infinity();
+  bool found = false;
+  double best = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::size_t i0 = i > 0 ? i - 1 : 0, i1 = std::min(rows.size() - 1, i + 1);
     StressPoint m;
     for (std::size_t j = i0; j <= i1; ++j) m.sigma += rows[j].sigma, m.tau += rows[j].tau;
     m.sigma /= double(i1 - i0 + 1), m.tau /= double(i1 - i0 + 1);
-    double key = m.tau;
-    if (criterion == FailureCriterion::PeakRatio)
-      key = m.sigma > 0 ? m.tau / m.sigma : -std::numeric_limits<double>::infinity();
-    if (i == 0 || key > best) best = key, pick.point = m, pick.row = i;
+    if (criterion == FailureCriterion::PeakRatio && !(m.sigma > 0)) continue;
+    const double key = criterion == FailureCriterion::PeakRatio ? m.tau / m.sigma : m.tau;
+    if (!std::isfinite(key)) continue;
+    if (!found || key > best) found = true, best = key, pick.point = m, pick.row = i;
   }
+  if (!found)
+    throw std::invalid_argument(criterion == FailureCriterion::PeakRatio
+                                    ? "no window with a finite tau / sigma and sigma > 0"
+                                    : "no window with a finite shear stress");
   return pick;
 }
 

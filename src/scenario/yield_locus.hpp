@@ -48,8 +48,8 @@ struct FailurePick {
   std::size_t row = 0;  // the window's centre row
 };
 
-// rows: the shear's (sigma, tau), at least one row; sigma > 0 in every row for PeakRatio (a
-// row with sigma <= 0 is never picked by it).
+// rows: the shear's (sigma, tau). Windows with a non-finite key, and for PeakRatio those with
+// mean sigma <= 0, are never picked; throws std::invalid_argument if no window is left.
 FailurePick pick_failure(const std::vector<StressPoint>& rows, FailureCriterion criterion);
 const char* failure_criterion_name(FailureCriterion c);  // peak-ratio | peak-tau
 

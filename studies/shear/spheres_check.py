@@ -45,8 +45,8 @@ def failure_points(out, config):
     """Mean failure shear stress (kPa) at each target normal stress over the seeds of config.
 
     Each point's tau is scaled to its target normal stress, tau x sigma_target / sigma: the cell's
-    servo holds the mean normal stress, not the stress at the failure point (within 10-16% on
-    average at the peak of tau / sigma, docs/validation/shear-cell.md 5.1). Exact for a locus
+    servo holds the mean normal stress, not the stress at the failure point (on average 9-16%
+    above it at the peak of tau / sigma for dry spheres, docs/validation/shear-cell.md 5.1). Exact for a locus
     through the origin (the dry spheres); for f1 and f2 the failure points' sigma is on the target
     within 3% on average, so the scaling moves their cohesive part by about that much."""
     taus = {}

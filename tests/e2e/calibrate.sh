@@ -80,8 +80,10 @@ copy_args[1]=$work/copy.toml
 grep -q "^case=$work/copy.toml$" "$work/cal/search.txt" || bad "search.txt does not record the case path"
 sed 's/^title = .*/title = "another case"/' "$case" > "$work/other.toml"
 copy_args[1]=$work/other.toml
+cp "$work/cal/search.txt" "$work/search.before"
 "$bin" "${copy_args[@]}" > /dev/null 2> "$work/c5.err"
 [ $? -eq 2 ] && grep -q "holds another case" "$work/c5.err" || bad "a search from another case: $(cat "$work/c5.err")"
+cmp -s "$work/cal/search.txt" "$work/search.before" || bad "a refused search rewrote search.txt"
 # Another search in the same directory is refused.
 "$bin" calibrate "$case" --param silo.outlet_diameter_mm --target mean_rate_kg_s=1 --bracket 20,60 \
   --out "$work/cal" > /dev/null 2> "$work/c3.err"

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include "model/contact/dispatch.hpp"
@@ -38,6 +39,17 @@ ContactLaw configure_contact_law(const ContactSpec& spec, const LawContext& ctx)
     L.size += e->history;
   }
   return law;
+}
+
+double applied_cohesion_force(const ContactLaw& law) {
+  return std::visit(
+      [](const auto& p) {
+        if constexpr (requires { p.force; })
+          return double(p.force);
+        else
+          return std::numeric_limits<double>::quiet_NaN();
+      },
+      law.cohesion);
 }
 
 bool CoalContactValues::empty() const {

@@ -119,6 +119,10 @@ class ContactModel {
   double max_reach_ = 0.0;
 };
 
+// The moisture force the cohesion law of `law` applies (its Params' `force`: F_L,cg after the
+// pair rule or wall factor and cohesion.factor, N); NaN for a law without one (none).
+double applied_cohesion_force(const ContactLaw& law);
+
 // One contact (dispatch.hpp's evaluate<K> for the laws `law` was configured with); the force loop
 // calls evaluate<K> directly.
 ContactResult evaluate_contact(const ContactLaw& law, const ContactGeometry& g, ContactState& s,

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include "scenario/yield_locus.hpp"
 
@@ -80,6 +81,22 @@ TEST(FailurePick, PeakRatioFindsTheMaterialPeakAndPeakTauTheLargestSwing) {
   EXPECT_NEAR(first.point.tau, 2e3, 1e-9);
   EXPECT_STREQ(failure_criterion_name(FailureCriterion::PeakRatio), "peak-ratio");
   EXPECT_STREQ(failure_criterion_name(FailureCriterion::PeakTau), "peak-tau");
+}
+
+// A row that is not a number (NaN) spoils the windows it is in, which are skipped, not picked
+// and not blocking later ones; a shear whose normal stress is never positive has no tau / sigma
+// peak, which is an error, not a point at row 0.
+TEST(FailurePick, SkipsWindowsWithoutAFiniteKeyAndRefusesWhenNoneIsLeft) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<StressPoint> rows{{nan, nan}, {5e3, 1e3}, {5e3, 1e3}, {5e3, 2e3}, {5e3, 1e3}};
+  for (auto c : {FailureCriterion::PeakTau, FailureCriterion::PeakRatio}) {
+    const FailurePick p = pick_failure(rows, c);
+    EXPECT_EQ(p.row, 4u);  // rows 3-4: tau 1.5 kPa, the largest finite window
+    EXPECT_NEAR(p.point.tau, 1.5e3, 1e-9);
+  }
+  const std::vector<StressPoint> lifted{{0, 0}, {0, 0}, {-1e2, 0}};
+  EXPECT_THROW(pick_failure(lifted, FailureCriterion::PeakRatio), std::invalid_argument);
+  EXPECT_THROW(pick_failure({}, FailureCriterion::PeakTau), std::invalid_argument);
 }
 
 }  // namespace
