@@ -3,7 +3,8 @@
 Reads every outlet.csv under validation/runs/paper-empty-k4/<case>/ (factor 0.111, the 12 s
 calibration), validation/runs/paper-recal-k4/factor=<f>_seed=<s>/ (the recalibration on the
 whole-discharge mean), validation/runs/paper-rumpf-k4/factor=<f>_seed=<s>/ (one factor on Eq. 14
-at the DEM packing's porosity, 35 s runs) and validation/runs/paper-k3/scenario=L3-I2_seed=<s>/
+at the DEM packing's porosity, 35 s runs), validation/runs/paper-rumpf-empty-k4/factor=<f>_seed=<s>/
+(the same, run to empty) and validation/runs/paper-k3/scenario=L3-I2_seed=<s>/
 (k = 3 with the calibrated force), and draws (left) the cumulative discharged mass against time with the
 experiment's end point (30.2 kg at 90 s, PHYSICS.md 7) and its mean rate as a dashed line (the
 paper gives the experiment's rate only as that mean), (middle) the rate in 1 s bins, and (right)
@@ -37,6 +38,10 @@ def runs():
         m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
         if m and (d / "outlet.csv").exists():
             yield f"{float(m.group(1)):g} on rumpf_porosity 0.38, seed {m.group(2)} (35 s)", d
+    for d in sorted((ROOT / "validation/runs/paper-rumpf-empty-k4").glob("factor=*_seed=*/")):
+        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
+        if m and (d / "outlet.csv").exists():
+            yield f"{float(m.group(1)):g} on rumpf_porosity 0.38, seed {m.group(2)}, to empty", d
     for d in sorted((ROOT / "validation/runs/paper-k3").glob("scenario=L3-I2_seed=*/")):
         if (d / "outlet.csv").exists():
             yield "0.54 at k = 3, alpha 2 (the force of 0.135 at k = 4)", d
