@@ -34,18 +34,12 @@ std::vector<double> kpa_list(const std::string& text, const char* option) {
     std::size_t b = text.find(',', a);
     if (b == std::string::npos) b = text.size();
     const std::string cell = text.substr(a, b - a);
-    std::size_t used = 0;
-    double x = 0;
-    try {
-      x = std::stod(cell, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != cell.size() || cell.empty() || !(x > 0) || !std::isfinite(x))
+    const auto x = parse_number(cell);
+    if (!x || !(*x > 0) || !std::isfinite(*x))
       throw InputError(
           {}, option,
           fmt::format("'{}' is not a positive number of kPa (give e.g. 7,6,5,4,3)", cell));
-    v.push_back(x * 1e3);
+    v.push_back(*x * 1e3);
     a = b + 1;
   }
   return v;

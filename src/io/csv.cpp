@@ -114,19 +114,25 @@ std::size_t CsvTable::column(const std::string& name) const {
   throw std::runtime_error(fmt::format("'{}' has no column '{}'", path, name));
 }
 
-double CsvTable::number(std::size_t row, std::size_t col) const {
-  const std::string& cell = rows.at(row).at(col);
+std::optional<double> parse_number(const std::string& text) {
   std::size_t used = 0;
   double x = 0;
   try {
-    x = std::stod(cell, &used);
+    x = std::stod(text, &used);
   } catch (const std::exception&) {
-    used = 0;
+    return std::nullopt;
   }
-  if (cell.empty() || used != cell.size())
+  if (text.empty() || used != text.size()) return std::nullopt;
+  return x;
+}
+
+double CsvTable::number(std::size_t row, std::size_t col) const {
+  const std::string& cell = rows.at(row).at(col);
+  const auto x = parse_number(cell);
+  if (!x)
     throw std::runtime_error(fmt::format("{}:{}: '{}' in column '{}' is not a number", path,
                                          lines.at(row), cell, header.at(col)));
-  return x;
+  return *x;
 }
 
 }  // namespace silodem

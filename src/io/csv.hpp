@@ -4,6 +4,7 @@
 #pragma once
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,5 +48,7 @@ struct CsvTable {
   double number(std::size_t row, std::size_t col) const;  // throws naming file:line
 };
 CsvTable read_csv_table(const std::string& path);
+// The whole of `text` as a number (std::stod's syntax), or nothing.
+std::optional<double> parse_number(const std::string& text);
 
 }  // namespace silodem
