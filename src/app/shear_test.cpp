@@ -68,6 +68,8 @@ nlohmann::json locus_json(const ShearTestResult& r) {
       {"ffc", finite_or_null(y.flow_function)},
       {"yield_locus", locus},
       {"fit_rms_residual_kpa", y.rms_residual / 1e3},
+      {"cohesion_stderr_kpa", finite_or_null(y.cohesion_stderr / 1e3)},
+      {"friction_angle_stderr_deg", finite_or_null(y.friction_angle_stderr / units::deg)},
       {"consolidation_circle_tangent", y.consolidation_tangent},
       {"mohr_unconfined_kpa", {y.unconfined.centre / 1e3, y.unconfined.radius / 1e3}},
       {"mohr_consolidation_kpa", {y.consolidation.centre / 1e3, y.consolidation.radius / 1e3}},
@@ -142,13 +144,18 @@ void print_results(const nlohmann::json& doc, const fs::path& out, bool json) {
     fmt::print("{}", doc.dump(2) + "\n");
     return;
   }
+  // "+- se" after C and phi: the fit's standard error (yield_locus.hpp), empty with two points.
+  const auto pm = [](const nlohmann::json& se, const char* f) {
+    return se.is_number() ? fmt::format(fmt::runtime(f), se.get<double>()) : std::string();
+  };
   for (const auto& r : doc["coals"])
     fmt::print(
-        "{}: C = {:.3f} kPa (measured {:.3f}), phi = {:.1f} deg (measured {:.1f}), f_c = "
+        "{}: C = {:.3f}{} kPa (measured {:.3f}), phi = {:.1f}{} deg (measured {:.1f}), f_c = "
         "{:.3f} kPa, sigma_1 = {:.3f} kPa, ffc = {}, bulk density {:.0f} kg/m3 "
         "(measured {:.0f})\n",
         r["coal"].get<std::string>(), r["cohesion_kpa"].get<double>(),
-        r["measured"]["cohesion_kpa"].get<double>(), r["friction_angle_deg"].get<double>(),
+        pm(r["cohesion_stderr_kpa"], " +- {:.3f}"), r["measured"]["cohesion_kpa"].get<double>(),
+        r["friction_angle_deg"].get<double>(), pm(r["friction_angle_stderr_deg"], " +- {:.1f}"),
         r["measured"]["friction_angle_deg"].get<double>(), r["unconfined_yield_kpa"].get<double>(),
         r["major_consolidation_kpa"].get<double>(),
         r["ffc"].is_null() ? std::string("inf (no cohesion)")

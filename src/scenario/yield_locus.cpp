@@ -48,6 +48,14 @@ YieldLocus fit_yield_locus(const std::vector<StressPoint>& pts, const StressPoin
   double r2 = 0;
   for (const auto& p : pts) r2 += std::pow(p.tau - y.cohesion - slope * p.sigma, 2);
   y.rms_residual = std::sqrt(r2 / n);
+  if (pts.size() > 2) {
+    const double sxx_c = sxx - sx * sx / n, s2 = r2 / (n - 2), mean = sx / n;
+    const double se_slope = std::sqrt(s2 / sxx_c);
+    y.cohesion_stderr = std::sqrt(s2 * (1 / n + mean * mean / sxx_c));
+    y.friction_angle_stderr = se_slope / (1 + slope * slope);
+  } else {
+    y.cohesion_stderr = y.friction_angle_stderr = std::numeric_limits<double>::quiet_NaN();
+  }
 
   const double s = std::sin(y.friction_angle), c = std::cos(y.friction_angle);
   // A circle of centre m on the sigma axis is tangent to tau = C + sigma tan(phi) when its radius

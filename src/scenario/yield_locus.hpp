@@ -19,10 +19,17 @@ struct MohrCircle {
 };
 
 struct YieldLocus {
-  double cohesion = 0.0;          // C, Pa (the intercept; may come out negative)
-  double friction_angle = 0.0;    // phi, rad (from the slope)
-  double rms_residual = 0.0;      // Pa, of the fit
-  MohrCircle unconfined;          // through the origin, tangent: f_c = 2 radius
+  double cohesion = 0.0;        // C, Pa (the intercept; may come out negative)
+  double friction_angle = 0.0;  // phi, rad (from the slope)
+  double rms_residual = 0.0;    // Pa, of the fit
+  // Standard errors of C and phi from the scatter about the line (ordinary least squares with
+  // n - 2 degrees of freedom: se(b) = s / sqrt(Sxx), se(C) = s sqrt(1/n + mean(sigma)^2 / Sxx),
+  // s^2 = SSE / (n - 2); phi's by the delta method, se(phi) = se(b) / (1 + b^2)). NaN with two
+  // points, which leave no degree of freedom. Over 3-7 kPa the intercept is an extrapolation
+  // past the tested stresses, so se(C) is several times the points' own scatter.
+  double cohesion_stderr = 0.0;        // Pa
+  double friction_angle_stderr = 0.0;  // rad
+  MohrCircle unconfined;               // through the origin, tangent: f_c = 2 radius
   MohrCircle consolidation;       // through the pre-shear point, tangent: sigma_1 = centre + radius
   double unconfined_yield = 0.0;  // f_c, Pa (0 when C <= 0)
   double major_consolidation = 0.0;   // sigma_1, Pa

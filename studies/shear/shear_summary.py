@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Rows of a table from shear-test run directories (stdlib only).
 
-usage: shear_summary.py DIR [DIR ...]   prints, per coal of each DIR/shear_test.json: C, phi, the
+usage: shear_summary.py DIR [DIR ...]   prints, per coal of each DIR/shear_test.json: C, phi (each
+with the fit's standard error), the
 steady tau/sigma of the first pre-shear (mean of the series beyond a strain of 0.25), f_c,
 sigma_1, ffc, bulk density and wall time, as CSV on stdout; and, for the paper's two coals, each
 failure shear stress over the measured yield locus C + sigma tan(phi) at the same normal stress
@@ -50,6 +51,10 @@ def rows(run_dir):
             "coal": c["coal"],
             "cohesion_kpa": c["cohesion_kpa"],
             "friction_angle_deg": c["friction_angle_deg"],
+            # the fit's standard errors (shear_test.json since 2026-12-05; nan before, or null
+            # with two failure points)
+            "cohesion_stderr_kpa": c.get("cohesion_stderr_kpa") or math.nan,
+            "friction_angle_stderr_deg": c.get("friction_angle_stderr_deg") or math.nan,
             "preshear_kpa": c["preshear_kpa"][0],
             "steady_ratio": steady_ratio(series) if os.path.exists(series) else math.nan,
             "unconfined_yield_kpa": c["unconfined_yield_kpa"],

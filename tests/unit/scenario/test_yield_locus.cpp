@@ -52,6 +52,34 @@ TEST(YieldLocus, NoCohesionMeansNoUnconfinedStrengthAndAnInfiniteFlowFunction) {
   EXPECT_NEAR(y.consolidation.radius, y.consolidation.centre * std::sin(y.friction_angle), 1e-6);
 }
 
+TEST(YieldLocus, StandardErrorsOfTheFitFollowTheTextbookFormulas) {
+  // Points off the line tau = 1 kPa + 0.5 sigma at 3..7 kPa by d x (1, -2, 0, 2, -1): the
+  // residuals sum to zero and are orthogonal to sigma, so least squares returns the line itself,
+  // SSE = 10 d^2 and s^2 = SSE / (n - 2) = 10 d^2 / 3. With mean(sigma) = 5 kPa and Sxx = 10 kPa^2
+  // (any regression text, e.g. Montgomery, Peck & Vining, Introduction to Linear Regression
+  // Analysis, 5th ed., 2.3.2): se(C) = s sqrt(1/5 + 25/10) = s sqrt(2.7) = 3 d exactly, and
+  // se(b) = s / sqrt(Sxx) = d sqrt(1/3) / kPa; phi = atan(b), so se(phi) = se(b) / (1 + b^2).
+  const double d = 100.0;  // Pa
+  const double e[] = {1, -2, 0, 2, -1};
+  std::vector<StressPoint> pts;
+  for (int i = 0; i < 5; ++i) {
+    const double s = (3 + i) * 1e3;
+    pts.push_back({s, 1e3 + 0.5 * s + e[i] * d});
+  }
+  const YieldLocus y = fit_yield_locus(pts, {9e3, 5e3});
+  EXPECT_NEAR(y.cohesion, 1e3, 1e-8);
+  EXPECT_NEAR(std::tan(y.friction_angle), 0.5, 1e-12);
+  EXPECT_NEAR(y.cohesion_stderr, 3 * d, 1e-9);
+  EXPECT_NEAR(y.friction_angle_stderr, d * std::sqrt(1.0 / 3.0) / 1e3 / 1.25, 1e-12);
+  // The scatter about the line, not its level: the same residuals at 10x tell 10x the error.
+  for (int i = 0; i < 5; ++i) pts[i].tau += 9 * e[i] * d;
+  EXPECT_NEAR(fit_yield_locus(pts, {9e3, 5e3}).cohesion_stderr, 30 * d, 1e-8);
+  // Two points leave no degree of freedom: no error estimate.
+  const YieldLocus two = fit_yield_locus({{3e3, 2e3}, {6e3, 4e3}}, {9e3, 5e3});
+  EXPECT_TRUE(std::isnan(two.cohesion_stderr));
+  EXPECT_TRUE(std::isnan(two.friction_angle_stderr));
+}
+
 TEST(YieldLocus, RefusesFewerThanTwoDistinctStresses) {
   EXPECT_THROW(fit_yield_locus({{3e3, 1e3}}, {9e3, 3e3}), std::invalid_argument);
   EXPECT_THROW(fit_yield_locus({{3e3, 1e3}, {3e3, 1.2e3}}, {9e3, 3e3}), std::invalid_argument);
