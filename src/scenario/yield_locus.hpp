@@ -25,8 +25,8 @@ struct YieldLocus {
   // Standard errors of C and phi from the scatter about the line (ordinary least squares with
   // n - 2 degrees of freedom: se(b) = s / sqrt(Sxx), se(C) = s sqrt(1/n + mean(sigma)^2 / Sxx),
   // s^2 = SSE / (n - 2); phi's by the delta method, se(phi) = se(b) / (1 + b^2)). NaN with two
-  // points, which leave no degree of freedom. Over 3-7 kPa the intercept is an extrapolation
-  // past the tested stresses, so se(C) is several times the points' own scatter.
+  // points, which leave no degree of freedom. At 3-7 kPa the intercept is an extrapolation past
+  // the tested stresses: se(C) is sqrt(1/5 + 5^2/10) = 1.64 times the scatter s of one point.
   double cohesion_stderr = 0.0;        // Pa
   double friction_angle_stderr = 0.0;  // rad
   MohrCircle unconfined;               // through the origin, tangent: f_c = 2 radius

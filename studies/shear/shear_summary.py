@@ -40,6 +40,10 @@ def locus_ratios(coal, yield_locus):
     return [tau / (c + sigma * math.tan(math.radians(phi))) for sigma, tau in yield_locus]
 
 
+def number_or_nan(x):
+    return math.nan if x is None else x
+
+
 def rows(run_dir):
     with open(os.path.join(run_dir, "shear_test.json")) as f:
         doc = json.load(f)
@@ -53,8 +57,8 @@ def rows(run_dir):
             "friction_angle_deg": c["friction_angle_deg"],
             # the fit's standard errors (shear_test.json since 2026-12-05; nan before, or null
             # with two failure points)
-            "cohesion_stderr_kpa": c.get("cohesion_stderr_kpa") or math.nan,
-            "friction_angle_stderr_deg": c.get("friction_angle_stderr_deg") or math.nan,
+            "cohesion_stderr_kpa": number_or_nan(c.get("cohesion_stderr_kpa")),
+            "friction_angle_stderr_deg": number_or_nan(c.get("friction_angle_stderr_deg")),
             "preshear_kpa": c["preshear_kpa"][0],
             "steady_ratio": steady_ratio(series) if os.path.exists(series) else math.nan,
             "unconfined_yield_kpa": c["unconfined_yield_kpa"],
