@@ -12,7 +12,8 @@ four panels:
   (b) the rate of each all-Longwanggou 1 s bin against the mass left in the silo;
   (c) RUN_DIR's outflow from the silo's particle count (probe_coordination.csv, every probe
       sample) in 0.5 s blocks per 10 s window: the mean rate, the rate of the flowing blocks and
-      the share of blocks "dripping" below 0.1 kg/s;
+      the share of blocks "dripping" below 0.1 kg/s (from 20 s on, counted at Longwanggou's
+      parcel mass: L3-I2's Indonesian is out by then);
   (d) the mean net normal load k_n delta - F of the contacts between slab particles
       (probe_slab.csv: |y| below the slab half-width), over F, by height above the outlet, at the
       slab's snapshots from 20 s on. delta from the stored positions and radii; F the coal pair's
