@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: MIT
 #include "io/run_metrics.hpp"
 
+#include "io/csv.hpp"
+
 #include <fmt/format.h>
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
@@ -77,25 +78,12 @@ RunState run_state(const fs::path& dir) {
 }
 
 std::vector<OutletRow> read_outlet_csv(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(fmt::format("cannot open '{}'", file.string()));
-  std::string line;
-  std::getline(in, line);
-  if (line.rfind("t_start_s,t_end_s,mass_kg", 0) != 0)
-    throw std::runtime_error(
-        fmt::format("'{}' does not start with t_start_s,t_end_s,mass_kg", file.string()));
+  const CsvTable t = read_csv_table(file.string());
+  const std::size_t t0 = t.column("t_start_s"), t1 = t.column("t_end_s"), m = t.column("mass_kg");
   std::vector<OutletRow> rows;
-  for (int n = 2; std::getline(in, line); ++n) {
-    if (line.empty()) continue;
-    std::istringstream s(line);
-    std::string a, b, c;
-    std::getline(s, a, ','), std::getline(s, b, ','), std::getline(s, c, ',');
-    try {
-      rows.push_back({std::stod(a), std::stod(b), c.empty() ? 0.0 : std::stod(c)});
-    } catch (const std::exception&) {
-      throw std::runtime_error(fmt::format("{}:{}: not a number in '{}'", file.string(), n, line));
-    }
-  }
+  rows.reserve(t.rows.size());
+  for (std::size_t r = 0; r < t.rows.size(); ++r)  // an empty bin's mass cell may be blank
+    rows.push_back({t.number(r, t0), t.number(r, t1), t.rows[r][m].empty() ? 0.0 : t.number(r, m)});
   return rows;
 }
 

@@ -118,3 +118,30 @@ TEST(RunMetrics, ATimeLimitEndsTheWindow) {
   EXPECT_TRUE(std::isinf(calibration_value(read_run_metrics(d), "discharge_time_s")));
   fs::remove_all(d);
 }
+
+TEST(RunMetrics, OutletCsvIsReadByColumnNameAndABadCellNamesItsLine) {
+  const fs::path d = fresh_dir("outlet");
+  // Columns in another order, a blank mass (an empty bin) and a trailing column.
+  write(d / "a.csv", "mass_kg,t_end_s,t_start_s,extra\n0.5,1,0,x\n,2,1,y\n0.25,3,2,z\n");
+  const auto rows = read_outlet_csv(d / "a.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].t_start, 0.0);
+  EXPECT_EQ(rows[0].t_end, 1.0);
+  EXPECT_EQ(rows[0].mass, 0.5);
+  EXPECT_EQ(rows[1].mass, 0.0);
+  EXPECT_EQ(rows[2].mass, 0.25);
+  // A cell that is not a number: the error names the file, line 3 and the column.
+  write(d / "b.csv", "t_start_s,t_end_s,mass_kg\n0,1,0.5\n1,2x,0.5\n");
+  try {
+    read_outlet_csv(d / "b.csv");
+    ADD_FAILURE() << "a bad cell was read";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("b.csv:3"), std::string::npos) << what;
+    EXPECT_NE(what.find("t_end_s"), std::string::npos) << what;
+  }
+  // No mass column at all.
+  write(d / "c.csv", "t_start_s,t_end_s\n0,1\n");
+  EXPECT_THROW(read_outlet_csv(d / "c.csv"), std::runtime_error);
+  fs::remove_all(d);
+}
