@@ -4,11 +4,14 @@ Reads every outlet.csv under validation/runs/paper-empty-k4/<case>/ (factor 0.11
 calibration), validation/runs/paper-recal-k4/factor=<f>_seed=<s>/ (the recalibration on the
 whole-discharge mean), validation/runs/paper-rumpf-k4/factor=<f>_seed=<s>/ (one factor on Eq. 14
 at the DEM packing's porosity, 35 s runs), validation/runs/paper-rumpf-empty-k4/factor=<f>_seed=<s>/
-(the same, run to empty) and validation/runs/paper-k3/scenario=L3-I2_seed=<s>/
+(the same, run to empty), validation/runs/paper-rumpf-recal-k4/factor=<f>_seed=<s>/ (its
+recalibration on runs to empty), validation/runs/paper-rumpf-k3/factor=<f>_seed=<s>/ (that force at
+k = 3, alpha 2) and validation/runs/paper-k3/scenario=L3-I2_seed=<s>/
 (k = 3 with the calibrated force), and draws (left) the cumulative discharged mass against time with the
 experiment's end point (30.2 kg at 90 s, PHYSICS.md 7) and its mean rate as a dashed line (the
 paper gives the experiment's rate only as that mean), (middle) the rate in 1 s bins, and (right)
-the outlet calorific value in 1 s bins. Prints one line per run: mass, time, mean rate.
+the outlet calorific value in 1 s bins. Prints one line per run: mass, time, mean rate, their ratios to the
+experiment's and whether all three are inside issue 16's band (5%, 10%, 10%).
 Usage: /usr/bin/python3 studies/paper_empty_figure.py [OUT.png]
 """
 import csv
@@ -42,6 +45,14 @@ def runs():
         m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
         if m and (d / "outlet.csv").exists():
             yield f"{float(m.group(1)):g} on rumpf_porosity 0.38, seed {m.group(2)}, to empty", d
+    for d in sorted((ROOT / "validation/runs/paper-rumpf-recal-k4").glob("factor=*_seed=*/")):
+        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
+        if m and (d / "outlet.csv").exists():
+            yield f"{float(m.group(1)):g} on rumpf_porosity 0.38, seed {m.group(2)}, to empty", d
+    for d in sorted((ROOT / "validation/runs/paper-rumpf-k3").glob("factor=*_seed=*/")):
+        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
+        if m and (d / "outlet.csv").exists():
+            yield f"{float(m.group(1)):g} under alpha 2 at k = 3, rumpf_porosity 0.38, seed {m.group(2)}", d
     for d in sorted((ROOT / "validation/runs/paper-k3").glob("scenario=L3-I2_seed=*/")):
         if (d / "outlet.csv").exists():
             yield "0.54 at k = 3, alpha 2 (the force of 0.135 at k = 4)", d
@@ -63,8 +74,15 @@ def main():
         cal = [(float(r["t_start_s"]) + 0.5, float(r["calorific_kcal_kg"])) for r in rows
                if r["calorific_kcal_kg"] not in ("", "nan")]
         c.plot([x for x, _ in cal], [y for _, y in cal], ".-", ms=3)
-        print(f"factor {label}: {s['discharged_mass_kg']:.3f} kg in {s['discharge_time_s']:.1f} s, "
-              f"{s['mean_rate_kg_s']:.3f} kg/s, end {s['end']}")
+        mass, time, rate = s["discharged_mass_kg"], s["discharge_time_s"], s["mean_rate_kg_s"]
+        # Issue 16 must-show 4: mass within 5%, time and mean rate within 10% of the experiment.
+        band = [abs(mass / EXP_MASS - 1) <= 0.05, abs(time / EXP_TIME - 1) <= 0.10,
+                abs(rate / (EXP_MASS / EXP_TIME) - 1) <= 0.10]
+        print(f"factor {label}: {mass:.3f} kg in {time:.1f} s, {rate:.3f} kg/s, end {s['end']}; "
+              f"against the experiment {mass / EXP_MASS:.3f}, {time / EXP_TIME:.3f}, "
+              f"{rate / (EXP_MASS / EXP_TIME):.3f}: " +
+              ("stopped by its time limit, no band" if s["end"] == "time limit" else
+               f"{'inside' if all(band) else 'outside'} the 5/10/10% band"))
     a.set_xlabel("time after the valve opens (s)")
     a.set_ylabel("discharged mass (kg)")
     a.set_title("L3-I2, k_n = 1e4 N/m, one factor (k = 4 unless said)")
