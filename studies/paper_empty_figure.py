@@ -29,30 +29,25 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 EXP_MASS, EXP_TIME = 30.2, 90.0  # PHYSICS.md 7 (the paper, section 4.1.3)
 
 
+# (folder under validation/runs/, label of each factor=<f>_seed=<s> run, "{f}" and "{s}" filled in)
+FACTOR_RUNS = [
+    ("paper-recal-k4", "{f}, seed {s}"),
+    ("paper-rumpf-k4", "{f} on rumpf_porosity 0.38, seed {s} (35 s)"),
+    ("paper-rumpf-empty-k4", "{f} on rumpf_porosity 0.38, seed {s}, to empty"),
+    ("paper-rumpf-recal-k4", "{f} on rumpf_porosity 0.38, seed {s}, to empty"),
+    ("paper-rumpf-k3", "{f} under alpha 2 at k = 3, rumpf_porosity 0.38, seed {s}"),
+]
+
+
 def runs():
-    for d in sorted((ROOT / "validation/runs/paper-empty-k4").glob("*/")):
-        if (d / "outlet.csv").exists() and d.name == "L3-I2":
-            yield "0.111 (12 s calibration), seed 1", d
-    for d in sorted((ROOT / "validation/runs/paper-recal-k4").glob("factor=*_seed=*/")):
-        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
-        if m and (d / "outlet.csv").exists():
-            yield f"{float(m.group(1)):g}, seed {m.group(2)}", d
-    for d in sorted((ROOT / "validation/runs/paper-rumpf-k4").glob("factor=*_seed=*/")):
-        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
-        if m and (d / "outlet.csv").exists():
-            yield f"{float(m.group(1)):g} on rumpf_porosity 0.38, seed {m.group(2)} (35 s)", d
-    for d in sorted((ROOT / "validation/runs/paper-rumpf-empty-k4").glob("factor=*_seed=*/")):
-        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
-        if m and (d / "outlet.csv").exists():
-            yield f"{float(m.group(1)):g} on rumpf_porosity 0.38, seed {m.group(2)}, to empty", d
-    for d in sorted((ROOT / "validation/runs/paper-rumpf-recal-k4").glob("factor=*_seed=*/")):
-        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
-        if m and (d / "outlet.csv").exists():
-            yield f"{float(m.group(1)):g} on rumpf_porosity 0.38, seed {m.group(2)}, to empty", d
-    for d in sorted((ROOT / "validation/runs/paper-rumpf-k3").glob("factor=*_seed=*/")):
-        m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
-        if m and (d / "outlet.csv").exists():
-            yield f"{float(m.group(1)):g} under alpha 2 at k = 3, rumpf_porosity 0.38, seed {m.group(2)}", d
+    d = ROOT / "validation/runs/paper-empty-k4/L3-I2"
+    if (d / "outlet.csv").exists():
+        yield "0.111 (12 s calibration), seed 1", d
+    for folder, label in FACTOR_RUNS:
+        for d in sorted((ROOT / "validation/runs" / folder).glob("factor=*_seed=*/")):
+            m = re.match(r"factor=([0-9.]+)_seed=(\d+)", d.name)
+            if m and (d / "outlet.csv").exists():
+                yield label.format(f=f"{float(m.group(1)):g}", s=m.group(2)), d
     for d in sorted((ROOT / "validation/runs/paper-k3").glob("scenario=L3-I2_seed=*/")):
         if (d / "outlet.csv").exists():
             yield "0.54 at k = 3, alpha 2 (the force of 0.135 at k = 4)", d
