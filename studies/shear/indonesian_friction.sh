@@ -11,12 +11,14 @@
 # by point with studies/shear/compare_k.py Indonesian "SET DIRS" "VARIANT DIRS".
 # Resumable: a run whose shear_test.json exists is skipped. One run at a time, one thread.
 # Cost: about 15 min of one core a test at k = 4.
-# Usage: bash studies/shear/indonesian_friction.sh OUT [SILODEM] [SEEDS]
+# Usage: bash studies/shear/indonesian_friction.sh OUT [SILODEM] [SEEDS] [VARIANTS]
+# VARIANTS: a space-separated list of the names above (default: both).
 set -euo pipefail
-out=${1:?usage: indonesian_friction.sh OUT [SILODEM] [SEEDS]}
+out=${1:?usage: indonesian_friction.sh OUT [SILODEM] [SEEDS] [VARIANTS]}
 here=$(cd "$(dirname "$0")/../.." && pwd)
 silodem=${2:-$here/build/release/silodem}
 seeds=${3:-3}
+read -r -a names <<<"${4:-roll0.8 slide0.9}"
 mkdir -p "$out"
 
 set_args=(--set coarse_graining.k=4)
@@ -30,7 +32,8 @@ declare -A variant=(
   [slide0.9]="contact.particle_particle.coal.Indonesian.tangential.friction=0.9"
 )
 for seed in $(seq 1 "$seeds"); do
-  for name in roll0.8 slide0.9; do
+  for name in "${names[@]}"; do
+    [[ -n ${variant[$name]+set} ]] || { echo "unknown variant '$name' (roll0.8, slide0.9)" >&2; exit 2; }
     dir=$out/${name}_Indonesian_seed=$seed
     [[ -f $dir/shear_test.json ]] && continue
     rm -rf "$dir"
