@@ -4,24 +4,28 @@
 # gives both coals about the same locus, while the measured ones differ (Longwanggou 0.67 kPa,
 # 33.4 deg; Indonesian 0.68 kPa, 37.2 deg): Indonesian comes out at phi 31-35 deg and C 0.8-1.1
 # kPa. Per-coal values ([contact.particle_particle.coal.Indonesian], docs/config.md) let
-# Indonesian's own contacts carry more friction. Variants, Indonesian only, k = 4, seeds 1..SEEDS:
+# Indonesian's own contacts carry more friction. Variants, Indonesian only, k = K, seeds 1..SEEDS:
 #   roll0.8    epsd rolling friction 0.8 (the set's 0.5)
 #   slide0.9   sliding friction 0.9 (the set's 0.6)
-# The set itself at k = 4 is validation/shear/luding-k4-stiff10-seeds/ (seeds 1-3). Compare point
-# by point with studies/shear/compare_k.py Indonesian "SET DIRS" "VARIANT DIRS".
+# The set itself at k = 4 is validation/shear/luding-k4-stiff10-seeds/ (seeds 1-3), at k = 3
+# luding-k3-stiff10/kc=2.5e4_* (seed 1) and luding-k3-stiff10-seeds/ (seeds 2-3); roll0.8 and
+# slide0.9 at k = 4 are luding-k4-stiff10-indonesian-friction/ (docs/validation/shear-cell.md
+# 5.7). Compare point by point with studies/shear/compare_k.py Indonesian "SET DIRS" "VARIANT DIRS".
 # Resumable: a run whose shear_test.json exists is skipped. One run at a time, one thread.
 # Cost: about 15 min of one core a test at k = 4.
-# Usage: bash studies/shear/indonesian_friction.sh OUT [SILODEM] [SEEDS] [VARIANTS]
-# VARIANTS: a space-separated list of the names above (default: both).
+# Usage: bash studies/shear/indonesian_friction.sh OUT [SILODEM] [SEEDS] [VARIANTS] [K]
+# VARIANTS: a space-separated list of the names above (default: both). K: the coarse-graining
+# factor (default 4; at k = 3 a test takes 17-42 min).
 set -euo pipefail
-out=${1:?usage: indonesian_friction.sh OUT [SILODEM] [SEEDS] [VARIANTS]}
+out=${1:?usage: indonesian_friction.sh OUT [SILODEM] [SEEDS] [VARIANTS] [K]}
 here=$(cd "$(dirname "$0")/../.." && pwd)
 silodem=${2:-$here/build/release/silodem}
 seeds=${3:-3}
 read -r -a names <<<"${4:-roll0.8 slide0.9}"
+k=${5:-4}
 mkdir -p "$out"
 
-set_args=(--set coarse_graining.k=4)
+set_args=(--set "coarse_graining.k=$k")
 for slot in particle_particle particle_wall; do
   set_args+=(--set "contact.$slot.normal.stiffness=1e5"
     --set "contact.$slot.normal.unloading_stiffness=5e5"
