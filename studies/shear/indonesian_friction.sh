@@ -11,7 +11,7 @@
 # luding-k3-stiff10/kc=2.5e4_* (seed 1) and luding-k3-stiff10-seeds/ (seeds 2-3); roll0.8 and
 # slide0.9 at k = 4 are luding-k4-stiff10-indonesian-friction/ (docs/validation/shear-cell.md
 # 5.7). Compare point by point with studies/shear/compare_k.py Indonesian "SET DIRS" "VARIANT DIRS".
-# Resumable: a run whose shear_test.json exists is skipped. One run at a time, one thread.
+# Resumable: a run whose shear_test.json exists (at the same k) is skipped. One run at a time, one thread.
 # Cost: about 15 min of one core a test at k = 4.
 # Usage: bash studies/shear/indonesian_friction.sh OUT [SILODEM] [SEEDS] [VARIANTS] [K]
 # VARIANTS: a space-separated list of the names above (default: both). K: the coarse-graining
@@ -39,7 +39,14 @@ for seed in $(seq 1 "$seeds"); do
   for name in "${names[@]}"; do
     [[ -n ${variant[$name]+set} ]] || { echo "unknown variant '$name' (roll0.8, slide0.9)" >&2; exit 2; }
     dir=$out/${name}_Indonesian_seed=$seed
-    [[ -f $dir/shear_test.json ]] && continue
+    if [[ -f $dir/shear_test.json ]]; then
+      # Folder names carry no k: a finished run at another k must not pass for this one.
+      done_k=$(/usr/bin/python3 -c 'import json, sys; print(float(json.load(open(sys.argv[1]))["k"]))' \
+        "$dir/shear_test.json")
+      [[ $done_k == "$(/usr/bin/python3 -c "print(float($k))")" ]] ||
+        { echo "$dir was run at k = $done_k, not $k: give another OUT" >&2; exit 2; }
+      continue
+    fi
     rm -rf "$dir"
     echo "$(date -u +%FT%TZ) $name seed $seed"
     "$silodem" shear-test "$here/studies/shear/luding-epsd.toml" --coal Indonesian --seed "$seed" \
