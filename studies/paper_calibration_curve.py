@@ -1,0 +1,135 @@
+"""Issue 16 c, must-show 4: the calibration curve of the paper's silo (L3-I2, k = 4, run to empty).
+
+Reads the committed study.csv files of the runs to empty and draws, for each way of turning the
+coals' properties into the moisture force, the mean rate and the discharge time against the one
+cohesion factor, with issue 16's band around the experiment (PHYSICS.md 7: 30.2 kg in 90 s, 0.335
+kg/s; band 10% in time and rate):
+  - Eq. 15's porosities (validation/studies/paper-empty-k4, paper-recal-k4: 0.111, 0.125, 0.135);
+  - rumpf_porosity 0.38 (validation/studies/paper-rumpf-empty-k4, paper-rumpf-recal-k4: 0.30-0.32).
+A third panel gives the time by which 95% of the Indonesian (the bottom coal) had left, from each
+run's committed outlet.csv, against the paper's "within the first 20 s" (its section 4.2, a statement
+about its simulation, not a measurement): the shape of the discharge beside its mean.
+Each point is one seed; a run whose flow stopped is drawn hollow. Prints every run and, between the
+two neighbouring factors whose rates bracket 0.335 kg/s (and whose times bracket 90 s), the factor
+found by linear interpolation: a reading of one seed per factor, not a calibrated value.
+Usage: /usr/bin/python3 studies/paper_calibration_curve.py [OUT.png]
+"""
+import csv
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+EXP_MASS, EXP_TIME, EXP_RATE = 30.2, 90.0, 0.335  # PHYSICS.md 7 (the paper, section 4.1.3)
+BAND = 0.10  # issue 16, must-show 4: 10% in discharge time and in mean rate
+
+FAMILIES = [
+    ("Eq. 15 porosities, alpha 3", ["paper-empty-k4", "paper-recal-k4"]),
+    ("rumpf_porosity 0.38, alpha 3", ["paper-rumpf-empty-k4", "paper-rumpf-recal-k4"]),
+]
+
+
+def rows(folders):
+    out = []
+    for folder in folders:
+        path = ROOT / "validation/studies" / folder / "study.csv"
+        for r in csv.DictReader(open(path)):
+            if r["state"] != "finished":
+                continue
+            factor = float(r["factor"]) if "factor" in r else 0.111  # paper-empty-k4 varies the scenario
+            out.append(
+                dict(
+                    factor=factor,
+                    seed=int(r["seed"]),
+                    mass=float(r["discharged_mass_kg"]),
+                    time=float(r["discharge_time_s"]),
+                    rate=float(r["mean_rate_kg_s"]),
+                    stopped=r["flow_stopped"] == "true",
+                    folder=folder,
+                )
+            )
+            out[-1]["indonesian"] = indonesian_out(run_dir(folder, out[-1]) / "outlet.csv")
+    return sorted(out, key=lambda r: (r["factor"], r["seed"]))
+
+
+def run_dir(folder, r):
+    base = ROOT / "validation/runs" / folder
+    return base / "L3-I2" if folder == "paper-empty-k4" else base / f"factor={r['factor']:g}_seed={r['seed']}"
+
+
+def indonesian_out(outlet):
+    """Time (end of the 1 s bin) by which 95% of the Indonesian that left had left."""
+    bins = list(csv.DictReader(open(outlet)))
+    mass = [float(b["mass_kg"]) * float(b["fraction_Indonesian"] or 0) for b in bins]
+    total, acc = sum(mass), 0.0
+    for b, m in zip(bins, mass):
+        acc += m
+        if acc >= 0.95 * total:
+            return float(b["t_end_s"])
+    return float("nan")
+
+
+def crossing(points, key, target):
+    """Factors where the metric crosses target between neighbouring factors (linear)."""
+    found = []
+    for a, b in zip(points, points[1:]):
+        ya, yb = a[key] - target, b[key] - target
+        if a["factor"] != b["factor"] and ya * yb <= 0 and ya != yb:
+            found.append(a["factor"] + (b["factor"] - a["factor"]) * ya / (ya - yb))
+    return found
+
+
+def main():
+    out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else ROOT / "docs/figures/study/paper-k4-calibration-curve.png"
+    fig, axes = plt.subplots(len(FAMILIES), 3, figsize=(14, 3.6 * len(FAMILIES)), squeeze=False)
+    for (name, folders), (ar, at, ai) in zip(FAMILIES, axes):
+        pts = rows(folders)
+        print(f"{name}:")
+        for p in pts:
+            inside = abs(p["time"] / EXP_TIME - 1) <= BAND and abs(p["rate"] / EXP_RATE - 1) <= BAND
+            print(
+                f"  factor {p['factor']:g} seed {p['seed']} ({p['folder']}): {p['mass']:.2f} kg, "
+                f"{p['time']:.1f} s ({p['time'] / EXP_TIME - 1:+.1%}), {p['rate']:.4f} kg/s "
+                f"({p['rate'] / EXP_RATE - 1:+.1%}), Indonesian 95% out by {p['indonesian']:.0f} s"
+                f"{', flow stopped' if p['stopped'] else ''}"
+                f"{', inside the band' if inside else ''}"
+            )
+        for key, target, unit in (("rate", EXP_RATE, "kg/s"), ("time", EXP_TIME, "s")):
+            xs = crossing(pts, key, target)
+            said = ", ".join(f"{x:.4f}" for x in xs) if xs else "not bracketed"
+            print(f"  {key} = {target:g} {unit} at factor {said} (linear between one-seed points)")
+        for ax, key, target, label in (
+            (ar, "rate", EXP_RATE, "mean rate (kg/s)"),
+            (at, "time", EXP_TIME, "discharge time (s)"),
+        ):
+            ax.axhspan(target * (1 - BAND), target * (1 + BAND), color="0.85", label="experiment +-10%")
+            ax.axhline(target, color="k", ls="--", lw=1, label=f"experiment ({target:g})")
+            xs = [p["factor"] for p in pts]
+            ax.plot(xs, [p[key] for p in pts], "-", color="C0", lw=1)
+            for p in pts:
+                ax.plot(p["factor"], p[key], "o", color="C0", mfc="none" if p["stopped"] else "C0")
+            ax.set_xlabel(f"cohesion factor ({name})")
+            ax.set_ylabel(label)
+            ax.grid(alpha=0.3)
+        ai.axhline(20, color="k", ls=":", lw=1, label="the paper's simulation: within 20 s")
+        ai.plot([p["factor"] for p in pts], [p["indonesian"] for p in pts], "-", color="C1", lw=1)
+        for p in pts:
+            ai.plot(p["factor"], p["indonesian"], "s", color="C1", mfc="none" if p["stopped"] else "C1")
+        ai.set_xlabel(f"cohesion factor ({name})")
+        ai.set_ylabel("95% of the Indonesian out by (s)")
+        ai.grid(alpha=0.3)
+        ai.legend(fontsize=8)
+        ar.legend(fontsize=8)
+        ar.set_title(f"L3-I2, k = 4, one seed per point ({name})", fontsize=9)
+    fig.tight_layout()
+    out.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out, dpi=120)
+    print(f"wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
