@@ -5,7 +5,9 @@ usage: spheres_check.py OUT   (OUT as written by studies/shear/spheres_check.sh)
 
 Reads OUT/<config>_seed=<n>/shear_test.json for the configs base, box, stiff, f1, f2, takes the
 mean over the seeds found, prints a table and the checks, writes OUT/checks.csv, and exits 1 if a
-check fails (2 if a config has no finished run). The tolerances are issue 17's. The steady
+check fails (2 if a config has no finished run). The optional configs f4 (F = 0.60 N) and box2
+(18 x 14 diameters), if OUT holds them, are reported beside the checks, not checked: whether C
+grows in proportion to the force from f2 to f4, and whether phi settles between box and box2. The tolerances are issue 17's. The steady
 friction is reported, not compared with the DEM literature (see the comment at PRESHEAR_KPA).
 """
 import csv
@@ -25,12 +27,13 @@ PRESHEAR_KPA = 9.0
 # lattice solid gouge models in 2D and 3D", abstract; docs/validation.md 5.1). One value is not a
 # band, so it is printed, not checked.
 LITERATURE_STEADY_RATIO = 0.38
-FORCES_N = {"f1": 0.15, "f2": 0.30}
+FORCES_N = {"f1": 0.15, "f2": 0.30, "f4": 0.60}
 CONFIGS = ["base", "box", "stiff", "f1", "f2"]
+OPTIONAL = ["f4", "box2"]
 
 
 def collect(out):
-    runs = {c: [] for c in CONFIGS}
+    runs = {c: [] for c in CONFIGS + OPTIONAL}
     for name in sorted(os.listdir(out)):
         config, _, seed = name.partition("_seed=")
         path = os.path.join(out, name)
@@ -82,7 +85,7 @@ def main(argv):
         return 2
     stats = {}
     print("config  seeds  C (kPa)        phi (deg)      steady tau/sigma   bulk density")
-    for c in CONFIGS:
+    for c in CONFIGS + [c for c in OPTIONAL if runs[c]]:
         rs = runs[c]
         s = {k: mean_sd([r[k] for r in rs])
              for k in ("cohesion_kpa", "friction_angle_deg", "steady_ratio", "bulk_density_kg_m3")}
@@ -137,6 +140,32 @@ def main(argv):
             print(f"failure tau of {c} over base at sigma = "
                   + ", ".join(f"{s:g}" for s in common) + " kPa: "
                   + ", ".join(f"{pts[s] / base_pts[s]:.3f}" for s in common)
+                  + " (reported, not checked)")
+    # Reported, not checked: the optional configs.
+    if "f4" in stats:
+        c_ratio = stats["f4"]["cohesion_kpa"][0] / stats["f2"]["cohesion_kpa"][0]
+        print(f"C(f4) / C(f2) over F4 / F2: {c_ratio / (FORCES_N['f4'] / FORCES_N['f2']):.3f} "
+              f"(C(f2) / C(f1) over F2 / F1: {ratio / (FORCES_N['f2'] / FORCES_N['f1']):.3f}; "
+              f"phi f1 {stats['f1']['friction_angle_deg'][0]:.2f}, f2 "
+              f"{stats['f2']['friction_angle_deg'][0]:.2f}, f4 {stats['f4']['friction_angle_deg'][0]:.2f} "
+              "deg) (reported, not checked)")
+        f4_pts = failure_points(out, "f4")
+        common = sorted(set(base_pts) & set(f2_pts) & set(f4_pts))
+        if common:
+            e2 = statistics.fmean(f2_pts[s] - base_pts[s] for s in common)
+            e4 = statistics.fmean(f4_pts[s] - base_pts[s] for s in common)
+            print(f"cohesive excess over base: f4 {e4:.3f} kPa; excess(f4) / excess(f2) over F4 / F2: "
+                  f"{e4 / e2 / (FORCES_N['f4'] / FORCES_N['f2']):.3f} (reported, not checked)")
+    if "box2" in stats:
+        print(f"phi box2 / box: {stats['box2']['friction_angle_deg'][0] / stats['box']['friction_angle_deg'][0]:.3f}, "
+              f"box2 / base: {stats['box2']['friction_angle_deg'][0] / base_phi:.3f}; steady tau/sigma "
+              f"box2 / box: {stats['box2']['steady_ratio'][0] / stats['box']['steady_ratio'][0]:.3f} "
+              "(reported, not checked)")
+        box_pts, box2_pts = failure_points(out, "box"), failure_points(out, "box2")
+        common = sorted(set(box_pts) & set(box2_pts))
+        if common:
+            print("failure tau of box2 over box at sigma = " + ", ".join(f"{s:g}" for s in common)
+                  + " kPa: " + ", ".join(f"{box2_pts[s] / box_pts[s]:.3f}" for s in common)
                   + " (reported, not checked)")
     print(f"steady tau/sigma against the one published 3D DEM value "
           f"({LITERATURE_STEADY_RATIO}, Latham et al. 2005): base "

@@ -8,11 +8,16 @@
 #   stiff  k_n = 3e5 N/m (10x)
 #   f1/f2  the constant-force law (cohesion "overlap-only") at F = 0.15 and 0.30 N (Bond number
 #          F / (m g) 54 and 108, as the paper's 54-72 at k = 3; F / d^2 = 4.2 and 8.3 kPa), base cell
-# with SEEDS seeds each (default 3). Then studies/shear/spheres_check.py compares the seeds' means
+#   f4     the same at F = 0.60 N (Bond number 216, F / d^2 = 16.7 kPa): does C grow in proportion
+#          to the force once the bonds outweigh the stresses of the test?
+#   box2   18 d wide, 14 d high (about 2.1x box's particles): does phi settle between box and box2?
+# with SEEDS seeds each (default 3). CONFIGS (environment) names the configs to run, default
+# "base f1 f2 box stiff" (issue 17's checks); f4 and box2 are run on request and reported beside them. Then studies/shear/spheres_check.py compares the seeds' means
 # with the tolerances of issue 17 and writes OUT/checks.csv; exit 1 if a check fails.
 # Resumable: a run whose shear_test.json exists is skipped. JOBS runs side by side (environment,
 # default 2), one thread each.
-# Cost: about 3 min of one core per base, f1 or f2 run; box 2.7x, stiff 3.2x; 3 seeds about 70 min.
+# Cost: about 3 min of one core per base, f1 or f2 run; box 2.7x, stiff 3.2x, box2 about 6x; 3
+# seeds of the default configs about 70 min.
 # Usage: bash studies/shear/spheres_check.sh OUT [SILODEM] [SEEDS]
 set -euo pipefail
 out=${1:?usage: spheres_check.sh OUT [SILODEM] [SEEDS]}
@@ -29,10 +34,16 @@ declare -A extra=(
   [stiff]="--set contact.particle_particle.normal.stiffness=3e5 --set contact.particle_wall.normal.stiffness=3e5"
   [f1]="--set contact.particle_particle.cohesion.law=overlap-only --set coal[0].cohesion_force_n=0.15"
   [f2]="--set contact.particle_particle.cohesion.law=overlap-only --set coal[0].cohesion_force_n=0.30"
+  [f4]="--set contact.particle_particle.cohesion.law=overlap-only --set coal[0].cohesion_force_n=0.60"
+  [box2]="--width 18 --height 14"
 )
+read -r -a configs <<<"${CONFIGS:-base f1 f2 box stiff}"
+for name in "${configs[@]}"; do
+  [[ -n ${extra[$name]+set} ]] || { echo "unknown config '$name' (base box stiff f1 f2 f4 box2)" >&2; exit 2; }
+done
 jobs=()
 for s in $(seq 1 "$seeds"); do
-  for name in base f1 f2 box stiff; do jobs+=("$name:$s"); done
+  for name in "${configs[@]}"; do jobs+=("$name:$s"); done
 done
 
 run_one() {
