@@ -16,7 +16,7 @@
 # with the tolerances of issue 17 and writes OUT/checks.csv; exit 1 if a check fails.
 # Resumable: a run whose shear_test.json exists is skipped. JOBS runs side by side (environment,
 # default 2), one thread each.
-# Cost: about 3 min of one core per base, f1 or f2 run; box 2.7x, stiff 3.2x, box2 about 6x; 3
+# Cost: about 3 min of one core per base, f1 or f2 run; box 2.7x, stiff 3.2x, box2 about 4x; 3
 # seeds of the default configs about 70 min.
 # Usage: bash studies/shear/spheres_check.sh OUT [SILODEM] [SEEDS]
 set -euo pipefail
