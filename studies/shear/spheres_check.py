@@ -7,8 +7,9 @@ Reads OUT/<config>_seed=<n>/shear_test.json for the configs base, box, stiff, f1
 mean over the seeds found, prints a table and the checks, writes OUT/checks.csv, and exits 1 if a
 check fails (2 if a config has no finished run). The optional configs f4 (F = 0.60 N) and box2
 (18 x 14 diameters), if OUT holds them, are reported beside the checks, not checked: whether C
-grows in proportion to the force from f2 to f4, and whether phi settles between box and box2. The tolerances are issue 17's. The steady
-friction is reported, not compared with the DEM literature (see the comment at PRESHEAR_KPA).
+grows in proportion to the force from f2 to f4, and whether phi settles between box and box2.
+The tolerances are issue 17's. The steady friction is reported, not compared with the DEM
+literature (see the comment at PRESHEAR_KPA).
 """
 import csv
 import math
