@@ -68,6 +68,16 @@ def failure_points(out, config):
     return {sigma: statistics.fmean(t) for sigma, t in taus.items()}
 
 
+def print_failure_ratios(name, pts, ref_name, ref_pts):
+    """Print the failure tau of one config over another's at each common target stress."""
+    common = sorted(set(ref_pts) & set(pts))
+    if common:
+        print(f"failure tau of {name} over {ref_name} at sigma = "
+              + ", ".join(f"{s:g}" for s in common) + " kPa: "
+              + ", ".join(f"{pts[s] / ref_pts[s]:.3f}" for s in common)
+              + " (reported, not checked)")
+
+
 def mean_sd(values):
     if not values:
         return math.nan, math.nan
@@ -135,13 +145,7 @@ def main(argv):
     # Reported, not checked: the failure stresses themselves of the larger box and of 10x k_n
     # against the base cell's, stress by stress (what the fitted C and phi summarise).
     for c in ("box", "stiff"):
-        pts = failure_points(out, c)
-        common = sorted(set(base_pts) & set(pts))
-        if common:
-            print(f"failure tau of {c} over base at sigma = "
-                  + ", ".join(f"{s:g}" for s in common) + " kPa: "
-                  + ", ".join(f"{pts[s] / base_pts[s]:.3f}" for s in common)
-                  + " (reported, not checked)")
+        print_failure_ratios(c, failure_points(out, c), "base", base_pts)
     # Reported, not checked: the optional configs.
     if "f4" in stats:
         c_ratio = stats["f4"]["cohesion_kpa"][0] / stats["f2"]["cohesion_kpa"][0]
@@ -162,12 +166,7 @@ def main(argv):
               f"box2 / base: {stats['box2']['friction_angle_deg'][0] / base_phi:.3f}; steady tau/sigma "
               f"box2 / box: {stats['box2']['steady_ratio'][0] / stats['box']['steady_ratio'][0]:.3f} "
               "(reported, not checked)")
-        box_pts, box2_pts = failure_points(out, "box"), failure_points(out, "box2")
-        common = sorted(set(box_pts) & set(box2_pts))
-        if common:
-            print("failure tau of box2 over box at sigma = " + ", ".join(f"{s:g}" for s in common)
-                  + " kPa: " + ", ".join(f"{box2_pts[s] / box_pts[s]:.3f}" for s in common)
-                  + " (reported, not checked)")
+        print_failure_ratios("box2", failure_points(out, "box2"), "box", failure_points(out, "box"))
     print(f"steady tau/sigma against the one published 3D DEM value "
           f"({LITERATURE_STEADY_RATIO}, Latham et al. 2005): base "
           f"{base_ratio / LITERATURE_STEADY_RATIO:.3f}, box "

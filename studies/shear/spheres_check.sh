@@ -12,8 +12,9 @@
 #          to the force once the bonds outweigh the stresses of the test?
 #   box2   18 d wide, 14 d high (about 2.1x box's particles): does phi settle between box and box2?
 # with SEEDS seeds each (default 3). CONFIGS (environment) names the configs to run, default
-# "base f1 f2 box stiff" (issue 17's checks); f4 and box2 are run on request and reported beside them. Then studies/shear/spheres_check.py compares the seeds' means
-# with the tolerances of issue 17 and writes OUT/checks.csv; exit 1 if a check fails.
+# "base f1 f2 box stiff" (issue 17's checks); f4 and box2 are run on request and reported beside
+# them. Then studies/shear/spheres_check.py compares the seeds' means with the tolerances of issue
+# 17 and writes OUT/checks.csv; exit 1 if a check fails.
 # Resumable: a run whose shear_test.json exists is skipped. JOBS runs side by side (environment,
 # default 2), one thread each.
 # Cost: about 3 min of one core per base, f1 or f2 run; box 2.7x, stiff 3.2x, box2 about 4x; 3
