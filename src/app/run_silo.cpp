@@ -259,6 +259,18 @@ class SiloRun {
       dis_->save(w);
       observers_->save(w);
     });
+    // Beside it, the outlet bins up to the checkpoint as outlet.csv.partial (the final outlet.csv
+    // replaces it): a few kilobytes that can be kept, committed, when a long run's checkpoint
+    // cannot and its machine may be lost (docs/runs.md).
+    write_outlet_csv(out_ / "outlet.csv.partial", c_,
+                     outlet_bins(dis_->outflow_so_far(), c_.discharge.bin,
+                                 sim_->time() - dis_->t0(), heating_values()));
+  }
+
+  std::vector<double> heating_values() const {
+    std::vector<double> q;
+    for (const auto& coal : c_.coals) q.push_back(coal.heating_value);
+    return q;
   }
 
   int discharge() {
@@ -345,8 +357,7 @@ class SiloRun {
 
   int finish() {
     const DischargeResult& d = dis_result_;
-    std::vector<double> q;
-    for (const auto& coal : c_.coals) q.push_back(coal.heating_value);
+    const std::vector<double> q = heating_values();
     // A time-limited run's last check lands just after max_time: its bins end at max_time (what
     // was in flight then is booked at max_time at the latest), not in a sliver bin after it.
     const double bins_end =
@@ -421,8 +432,8 @@ class SiloRun {
 
   toml::table summary_table(const char* end, const std::vector<OutletBin>& bins) {
     const DischargeResult& d = dis_result_;
-    std::vector<double> q, out_per_coal(c_.coals.size(), 0.0);
-    for (const auto& coal : c_.coals) q.push_back(coal.heating_value);
+    const std::vector<double> q = heating_values();
+    std::vector<double> out_per_coal(c_.coals.size(), 0.0);
     // Eq. 17 over the planned masses (measured bulk density x segment volume); a coal without a
     // measured bulk density (a dry case filled by volume) has no plan: the filled masses then.
     double inventory_calorific = report_.inventory_calorific;

@@ -101,6 +101,10 @@ class Discharge {
   void open();  // t = 0: the valve opens; the filled mass is what is in the silo now
   DischargeResult run(const DischargeProgress& progress, const DischargeControl& control = {});
   double t0() const { return t0_; }  // simulation time at the valve opening
+  // The outflow booked so far, in booking order: a particle is booked (at the time of the check
+  // that saw it cross the outlet plane) when it reaches the sink, so what is still falling
+  // between the outlet and the sink is not in it yet.
+  const std::vector<OutletRecord>& outflow_so_far() const { return r_.outflow; }
   void save(ByteWriter& w) const;
   void load(ByteReader& r);
 
