@@ -33,6 +33,9 @@ namespace fs = std::filesystem;
 namespace silodem::app {
 namespace {
 
+// The outlet bins up to the last checkpoint of a discharge still under way (docs/runs.md).
+constexpr const char* kOutletSoFar = "outlet_so_far.csv";
+
 // ---- signals ----------------------------------------------------------------------------------
 
 // Set by the handler, read by the time loop (which may run on another thread than the one the
@@ -259,12 +262,19 @@ class SiloRun {
       dis_->save(w);
       observers_->save(w);
     });
-    // Beside it, the outlet bins up to the checkpoint as outlet.csv.partial (the final outlet.csv
-    // replaces it): a few kilobytes that can be kept, committed, when a long run's checkpoint
-    // cannot and its machine may be lost (docs/runs.md).
-    write_outlet_csv(out_ / "outlet.csv.partial", c_,
-                     outlet_bins(dis_->outflow_so_far(), c_.discharge.bin,
-                                 sim_->time() - dis_->t0(), heating_values()));
+    // Beside it, the outlet bins up to the checkpoint (removed when the run ends): a few
+    // kilobytes that can be kept, committed, when a long run's checkpoint cannot and its machine
+    // may be lost (docs/runs.md). Advisory, as progress.json: a failed write does not stop the run.
+    try {
+      write_outlet_csv(out_ / kOutletSoFar, c_,
+                       outlet_bins(dis_->outflow_so_far(), c_.discharge.bin,
+                                   sim_->time() - dis_->t0(), heating_values()));
+    } catch (const std::exception& e) {
+      if (!outlet_so_far_failed_)
+        fmt::print(stderr, "warning: cannot write {} ({}); the run goes on\n", kOutletSoFar,
+                   e.what());
+      outlet_so_far_failed_ = true;
+    }
   }
 
   std::vector<double> heating_values() const {
@@ -379,6 +389,8 @@ class SiloRun {
     toml::table summary = summary_table(end, bins);
     write_text(out_ / "summary.json", to_json(summary));
     remove_run_progress(out_);  // the run has its result
+    std::error_code ignored;
+    fs::remove(out_ / kOutletSoFar, ignored);
     // Complete: nothing to resume. After an error the last good checkpoint stays (resume it
     // with --force after changing what caused the error, e.g. a smaller time step).
     if (error_.empty()) RunDir(out_).remove_checkpoint();
@@ -514,6 +526,7 @@ class SiloRun {
   double wall_before_ = 0.0;
   RunProgress last_progress_;
   bool progress_failed_ = false;
+  bool outlet_so_far_failed_ = false;
   double progress_written_ =
       -std::numeric_limits<double>::infinity();  // wall() when progress.json was last written
   std::uint64_t case_hash_ = 0;
