@@ -40,7 +40,7 @@ def rows(folders):
     for folder in folders:
         path = ROOT / "validation/studies" / folder / "study.csv"
         for r in csv.DictReader(open(path)):
-            if r["state"] != "finished":
+            if r["state"] != "finished" or r.get("scenario", "L3-I2") != "L3-I2":
                 continue
             factor = float(r["factor"]) if "factor" in r else 0.111  # paper-empty-k4 varies the scenario
             out.append(
