@@ -22,6 +22,8 @@ import sys
 
 import matplotlib
 
+from paper_run_row import bottom_out, read_bins  # same folder: the table's reading of the phases
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
@@ -65,14 +67,7 @@ def run_dir(folder, r):
 
 def indonesian_out(outlet):
     """Time (end of the 1 s bin) by which 95% of the Indonesian that left had left."""
-    bins = list(csv.DictReader(open(outlet)))
-    mass = [float(b["mass_kg"]) * float(b["fraction_Indonesian"] or 0) for b in bins]
-    total, acc = sum(mass), 0.0
-    for b, m in zip(bins, mass):
-        acc += m
-        if acc >= 0.95 * total:
-            return float(b["t_end_s"])
-    return float("nan")
+    return bottom_out(read_bins(outlet))
 
 
 def means(pts):

@@ -4,8 +4,8 @@ For each run directory given (summary.json and outlet.csv, committed under valid
 live run's directory once it has finished) prints:
   - discharged mass, discharge time and mean rate (summary.json), with their differences from the
     experiment (PHYSICS.md 7: 30.2 kg in 90 s, 0.335 kg/s);
-  - the time by which 95% of the Indonesian that left had left (end of its 1 s bin, as
-    paper_calibration_curve.py reads it);
+  - the time by which 95% of the Indonesian that left had left (end of its 1 s bin; also used by
+    paper_calibration_curve.py);
   - the Longwanggou's 5% and 95% times of its outflow (interpolated inside the 1 s bins) and its
     mean rate between them (90% of its outflow over that span);
   - the mean rates over 20-40, 40-60 and 60-80 s from the cumulative mass (a window the run did
@@ -40,6 +40,17 @@ def read_bins(path):
     return bins
 
 
+def bottom_out(bins):
+    """Time (end of the 1 s bin) by which 95% of the bottom coal that left had left."""
+    masses = [b["mass"] * b["bottom"] for b in bins]
+    total, acc = sum(masses), 0.0
+    for b, m in zip(bins, masses):
+        acc += m
+        if acc >= 0.95 * total:
+            return b["t1"]
+    return float("nan")
+
+
 def time_when(bins, masses, target):
     """First time at which the running sum of masses (one per bin) reaches target, linear in the bin."""
     acc = 0.0
@@ -69,13 +80,7 @@ def row(run):
     d = summary["discharge"] if "discharge" in summary else summary
     mass, time = float(d["discharged_mass_kg"]), float(d["discharge_time_s"])
     rate = mass / time
-    bottom = [b["mass"] * b["bottom"] for b in bins]
-    acc, bottom_out = 0.0, float("nan")
-    for b, m in zip(bins, bottom):
-        acc += m
-        if acc >= 0.95 * sum(bottom):
-            bottom_out = b["t1"]
-            break
+    out_by = bottom_out(bins)
     top = [b["mass"] * b["top"] for b in bins]
     t5, t95 = time_when(bins, top, 0.05 * sum(top)), time_when(bins, top, 0.95 * sum(top))
     windows = []
@@ -89,7 +94,7 @@ def row(run):
     t_exp = time_when(bins, [b["mass"] for b in bins], EXP_MASS)
     return (
         f"{run}: {mass:.2f} kg ({mass / EXP_MASS - 1:+.1%}), {time:.1f} s ({time / EXP_TIME - 1:+.1%}), "
-        f"{rate:.4f} kg/s ({rate / EXP_RATE - 1:+.1%}); {BOTTOM} 95% out by {bottom_out:.0f} s; "
+        f"{rate:.4f} kg/s ({rate / EXP_RATE - 1:+.1%}); {BOTTOM} 95% out by {out_by:.0f} s; "
         f"{TOP} 5-95% of its outflow {t5:.0f}-{t95:.0f} s, {0.9 * sum(top) / (t95 - t5):.2f} kg/s; "
         f"20-40, 40-60, 60-80 s: {', '.join(windows)} kg/s; "
         f"{EXP_MASS} kg out at " + (f"{t_exp:.1f} s" if t_exp == t_exp else "never")
