@@ -10,8 +10,9 @@ A third panel gives the time by which 95% of the Indonesian (the bottom coal) ha
 run's committed outlet.csv, against the paper's "within the first 20 s" (its section 4.2, a statement
 about its simulation, not a measurement): the shape of the discharge beside its mean.
 Each point is one seed; a run whose flow stopped is drawn hollow; the line joins each factor's mean
-over its seeds. Prints every run, each factor's mean (and the seeds' range where it has several)
-and, between the two neighbouring factors whose mean rates bracket 0.335 kg/s (and whose mean times
+over its seeds, marked by a bar where it has several (red if a seed's flow stopped: its time counts
+as the time it stopped, so the mean time is a lower bound). Prints every run, each factor's mean
+(and the seeds' range where it has several) and, between the two neighbouring factors whose mean rates bracket 0.335 kg/s (and whose mean times
 bracket 90 s), the factor found by linear interpolation: a reading of the means, not a calibrated
 value (where a factor has one seed, of that seed).
 Usage: /usr/bin/python3 studies/paper_calibration_curve.py [OUT.png]
@@ -75,7 +76,7 @@ def means(pts):
     out = []
     for f in sorted({p["factor"] for p in pts}):
         group = [p for p in pts if p["factor"] == f]
-        m = dict(factor=f, seeds=len(group))
+        m = dict(factor=f, seeds=len(group), stopped=sum(p["stopped"] for p in group))
         for key in ("rate", "time", "indonesian"):
             vals = [p[key] for p in group]
             m[key], m[key + "_range"] = sum(vals) / len(vals), (min(vals), max(vals))
@@ -116,6 +117,12 @@ def main():
                     f"{m['time']:.1f} s ({m['time_range'][0]:.1f}-{m['time_range'][1]:.1f}), "
                     f"{m['rate']:.4f} kg/s ({m['rate_range'][0]:.4f}-{m['rate_range'][1]:.4f}), "
                     f"Indonesian out by {m['indonesian']:.0f} s"
+                    + (
+                        f"; {m['stopped']} of them stopped with the silo not empty, so the mean time is a "
+                        "lower bound and the mean rate an upper bound"
+                        if m["stopped"]
+                        else ""
+                    )
                 )
         for key, target, unit in (("rate", EXP_RATE, "kg/s"), ("time", EXP_TIME, "s")):
             xs = crossing(avg, key, target)
@@ -128,6 +135,9 @@ def main():
             ax.axhspan(target * (1 - BAND), target * (1 + BAND), color="0.85", label="experiment +-10%")
             ax.axhline(target, color="k", ls="--", lw=1, label=f"experiment ({target:g})")
             ax.plot([m["factor"] for m in avg], [m[key] for m in avg], "-", color="C0", lw=1)
+            for m in avg:
+                if m["seeds"] > 1:  # the factor's mean; red where a seed's flow stopped (a bound)
+                    ax.plot(m["factor"], m[key], "_", ms=14, mew=2, color="C0" if not m["stopped"] else "C3")
             for p in pts:
                 ax.plot(p["factor"], p[key], "o", color="C0", mfc="none" if p["stopped"] else "C0")
             ax.set_xlabel(f"cohesion factor ({name})")
