@@ -35,6 +35,8 @@ FACTOR_RUNS = [
     ("paper-rumpf-k4", "{f} on rumpf_porosity 0.38, seed {s} (35 s)"),
     ("paper-rumpf-empty-k4", "{f} on rumpf_porosity 0.38, seed {s}, to empty"),
     ("paper-rumpf-recal-k4", "{f} on rumpf_porosity 0.38, seed {s}, to empty"),
+    ("paper-rumpf-mid-k4", "{f} on rumpf_porosity 0.38, seed {s}, to empty"),
+    ("paper-rumpf-mid-seeds-k4", "{f} on rumpf_porosity 0.38, seed {s}, to empty, per-particle skin"),
     ("paper-rumpf-k3", "{f} under alpha 2 at k = 3, rumpf_porosity 0.38, seed {s}"),
 ]
 
