@@ -10,7 +10,8 @@ live run's directory once it has finished) prints:
     mean rate between them (90% of its outflow over that span);
   - the mean rates over 20-40, 40-60 and 60-80 s from the cumulative mass (a window the run did
     not reach is cut at its discharge time and marked);
-  - when the experiment's 30.2 kg were out (interpolated), or "never".
+  - when the experiment's 30.2 kg were out (interpolated), or "never";
+  - for a run whose flow stopped, the mass left in the silo and its share of the fill.
 Usage: /usr/bin/python3 studies/paper_run_row.py RUN_DIR [RUN_DIR ...]
 """
 import csv
@@ -97,8 +98,16 @@ def row(run):
         f"{rate:.4f} kg/s ({rate / EXP_RATE - 1:+.1%}); {BOTTOM} 95% out by {out_by:.0f} s; "
         f"{TOP} 5-95% of its outflow {t5:.0f}-{t95:.0f} s, {0.9 * sum(top) / (t95 - t5):.2f} kg/s; "
         f"20-40, 40-60, 60-80 s: {', '.join(windows)} kg/s; "
-        f"{EXP_MASS} kg out at " + (f"{t_exp:.1f} s" if t_exp == t_exp else "never")
+        f"{EXP_MASS} kg out at " + (f"{t_exp:.1f} s" if t_exp == t_exp else "never") + stopped(d)
     )
+
+
+def stopped(d):
+    """'; flow stopped with M kg (F of the fill) left' for a run whose flow stopped, else ''."""
+    if d.get("flow_stopped") is not True:
+        return ""
+    left, filled = float(d["remaining_mass_kg"]), float(d["filled_mass_kg"])
+    return f"; flow stopped with {left:.2f} kg ({left / filled:.1%} of the fill) left"
 
 
 def main(argv):
