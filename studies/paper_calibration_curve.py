@@ -5,17 +5,18 @@ coals' properties into the moisture force, the mean rate and the discharge time 
 cohesion factor, with issue 16's band around the experiment (PHYSICS.md 7: 30.2 kg in 90 s, 0.335
 kg/s; band 10% in time and rate):
   - Eq. 15's porosities (validation/studies/paper-empty-k4, paper-recal-k4: 0.111, 0.125, 0.135);
-  - rumpf_porosity 0.38 (validation/studies/paper-rumpf-empty-k4, paper-rumpf-recal-k4, paper-rumpf-mid-k4
-    and, once it has run, paper-rumpf-mid-seeds-k4: 0.30-0.32).
+  - rumpf_porosity 0.38 (validation/studies/paper-rumpf-empty-k4, paper-rumpf-recal-k4,
+    paper-rumpf-mid-k4 and, once it has run, paper-rumpf-mid-seeds-k4: 0.30-0.32).
 A third panel gives the time by which 95% of the Indonesian (the bottom coal) had left, from each
 run's committed outlet.csv, against the paper's "within the first 20 s" (its section 4.2, a statement
 about its simulation, not a measurement): the shape of the discharge beside its mean.
 Each point is one seed; a run whose flow stopped is drawn hollow; the line joins each factor's mean
 over its seeds, marked by a bar where it has several (red if a seed's flow stopped: its time counts
 as the time it stopped, so the mean time is a lower bound). Prints every run, each factor's mean
-(and the seeds' range where it has several) and, between the two neighbouring factors whose mean rates bracket 0.335 kg/s (and whose mean times
-bracket 90 s), the factor found by linear interpolation: a reading of the means, not a calibrated
-value (where a factor has one seed, of that seed).
+(and the seeds' range where it has several) and, between the two neighbouring factors whose mean
+rates bracket 0.335 kg/s (and whose mean times bracket 90 s), the factor found by linear
+interpolation: a reading of the means, not a calibrated value (where a factor has one seed, of
+that seed).
 Usage: /usr/bin/python3 studies/paper_calibration_curve.py [OUT.png]
 """
 import csv
@@ -35,8 +36,10 @@ BAND = 0.10  # issue 16, must-show 4: 10% in discharge time and in mean rate
 
 FAMILIES = [
     ("Eq. 15 porosities, alpha 3", ["paper-empty-k4", "paper-recal-k4"]),
-    ("rumpf_porosity 0.38, alpha 3", ["paper-rumpf-empty-k4", "paper-rumpf-recal-k4", "paper-rumpf-mid-k4",
-                                      "paper-rumpf-mid-seeds-k4"]),
+    (
+        "rumpf_porosity 0.38, alpha 3",
+        ["paper-rumpf-empty-k4", "paper-rumpf-recal-k4", "paper-rumpf-mid-k4", "paper-rumpf-mid-seeds-k4"],
+    ),
 ]
 
 
@@ -141,7 +144,7 @@ def main():
             ax.plot([m["factor"] for m in avg], [m[key] for m in avg], "-", color="C0", lw=1)
             for m in avg:
                 if m["seeds"] > 1:  # the factor's mean; red where a seed's flow stopped (a bound)
-                    ax.plot(m["factor"], m[key], "_", ms=14, mew=2, color="C0" if not m["stopped"] else "C3")
+                    ax.plot(m["factor"], m[key], "_", ms=14, mew=2, color="C3" if m["stopped"] else "C0")
             for p in pts:
                 ax.plot(p["factor"], p[key], "o", color="C0", mfc="none" if p["stopped"] else "C0")
             ax.set_xlabel(f"cohesion factor ({name})")
