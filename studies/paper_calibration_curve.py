@@ -159,9 +159,13 @@ def main():
         ai.grid(alpha=0.3)
         if any(p["stopped"] for p in pts):
             ar.plot([], [], "o", color="C0", mfc="none", label="hollow: the flow stopped (not empty)")
+        if any(m["seeds"] > 1 for m in avg):
+            ar.plot([], [], "_", ms=14, mew=2, color="C0", label="bar: the factor's mean (red: a seed stopped)")
         ai.legend(fontsize=8)
         ar.legend(fontsize=8)
-        ar.set_title(f"L3-I2, k = 4, one seed per point, line through the means ({name})", fontsize=9)
+        several = [f"{m['factor']:g}: {m['seeds']} seeds" for m in avg if m["seeds"] > 1]
+        count = "one seed per factor" if not several else "; ".join(several) + ", the others one"
+        ar.set_title(f"L3-I2, k = 4, {count} ({name})", fontsize=9, loc="left")
     fig.tight_layout()
     out.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(out, dpi=120)
