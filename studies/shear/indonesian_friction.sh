@@ -25,7 +25,8 @@ read -r -a names <<<"${4:-roll0.8 slide0.9}"
 k=${5:-4}
 mkdir -p "$out"
 
-set_args=(--set "coarse_graining.k=$k")
+# The 10 x 8 cell of the sets it is compared with (the default cell before 2026-12-06).
+set_args=(--width 10 --height 8 --set "coarse_graining.k=$k")
 for slot in particle_particle particle_wall; do
   set_args+=(--set "contact.$slot.normal.stiffness=1e5"
     --set "contact.$slot.normal.unloading_stiffness=5e5"

@@ -69,6 +69,7 @@ def rows(run_dir):
             "locus_ratio_mean": sum(ratios) / len(ratios),
             "locus_ratio_max": max(ratios),
             "particles": c["cell"]["particles"],
+            "cell_width_d": c["cell"]["width_mm"] / c["cell"]["mean_cg_diameter_mm"],
             "wall_time_s": c["cell"]["wall_time_s"],
         }
 

@@ -5,9 +5,14 @@ usage: spheres_check.py OUT   (OUT as written by studies/shear/spheres_check.sh)
 
 Reads OUT/<config>_seed=<n>/shear_test.json for the configs base, box, stiff, f1, f2, takes the
 mean over the seeds found, prints a table and the checks, writes OUT/checks.csv, and exits 1 if a
-check fails (2 if a config has no finished run). The optional configs f4 (F = 0.60 N) and box2
-(18 x 14 diameters), if OUT holds them, are reported beside the checks, not checked: whether C
-grows in proportion to the force from f2 to f4, and whether phi settles between box and box2.
+check fails (2 if a config has no finished run, or if the cells do not fit together). The optional
+configs f4 (F = 0.60 N) and box2 (a third cell size), if OUT holds them, are reported beside the
+checks, not checked: whether C grows in proportion to the force from f2 to f4, and whether phi
+settles with the cell's size.
+The cell sizes are read from the runs, not assumed: stiff, f1, f2 and f4 must be in base's cell and
+box in another (spheres_check.sh's layout since 2026-12-06 is base 14 x 11 diameters, box 18 x 14,
+box2 10 x 8; validation/shear/peak-ratio/spheres/ holds the runs of the layout before, base 10 x 8,
+box 14 x 11, box2 18 x 14).
 The tolerances are issue 17's. The steady friction is reported, not compared with the DEM
 literature (see the comment at PRESHEAR_KPA).
 """
@@ -91,42 +96,67 @@ def main(argv):
     out = argv[1]
     runs = collect(out)
     missing = [c for c in CONFIGS if not runs[c]]
-    if missing:
-        print(f"spheres_check: no finished run for {', '.join(missing)} in {out}", file=sys.stderr)
+    if "base" in missing:
+        print(f"spheres_check: no finished run of base in {out}", file=sys.stderr)
+        return 2
+    cells = {}
+    for c, rs in runs.items():
+        widths = sorted({round(r["cell_width_d"], 3) for r in rs})
+        if len(widths) > 1:
+            print(f"spheres_check: the runs of {c} in {out} are in cells {widths} diameters wide, "
+                  "not one", file=sys.stderr)
+            return 2
+        if widths:
+            cells[c] = widths[0]
+    for c in ("stiff", "f1", "f2", "f4"):
+        if c in cells and cells[c] != cells["base"]:
+            print(f"spheres_check: {c} is in a {cells[c]:g}-diameter cell, base in a "
+                  f"{cells['base']:g}: they must share the cell (runs of two layouts in {out}?)",
+                  file=sys.stderr)
+            return 2
+    if cells.get("box") == cells["base"]:
+        print(f"spheres_check: box and base are both {cells['base']:g} diameters wide: the box check "
+              "needs two cell sizes", file=sys.stderr)
         return 2
     stats = {}
-    print("config  seeds  C (kPa)        phi (deg)      steady tau/sigma   bulk density")
-    for c in CONFIGS + [c for c in OPTIONAL if runs[c]]:
+    print("config  cell (d)  seeds  C (kPa)        phi (deg)      steady tau/sigma   bulk density")
+    for c in [c for c in CONFIGS + OPTIONAL if runs[c]]:
         rs = runs[c]
         s = {k: mean_sd([r[k] for r in rs])
              for k in ("cohesion_kpa", "friction_angle_deg", "steady_ratio", "bulk_density_kg_m3")}
         s["n"] = len(rs)
         stats[c] = s
-        print(f"{c:6}  {len(rs):5}  {s['cohesion_kpa'][0]:6.3f} +-{s['cohesion_kpa'][1]:5.3f}  "
+        print(f"{c:6}  {cells[c]:8g}  {len(rs):5}  {s['cohesion_kpa'][0]:6.3f} +-{s['cohesion_kpa'][1]:5.3f}  "
               f"{s['friction_angle_deg'][0]:5.2f} +-{s['friction_angle_deg'][1]:4.2f}  "
               f"{s['steady_ratio'][0]:6.4f} +-{s['steady_ratio'][1]:6.4f}   "
               f"{s['bulk_density_kg_m3'][0]:7.1f}")
 
     checks = []
 
-    def check(name, value, low, high, note):
-        ok = low <= value <= high
-        checks.append({"check": name, "value": f"{value:.4g}", "low": f"{low:.4g}",
+    def check(name, value, low, high, note, needs=()):
+        """One check; written as not run (pass "-") when a config it needs has no run."""
+        if any(c in missing for c in needs):
+            checks.append({"check": name, "value": "not run", "low": f"{low:.4g}",
+                           "high": f"{high:.4g}", "pass": "-", "note": note})
+            return
+        ok = low <= value() <= high
+        checks.append({"check": name, "value": f"{value():.4g}", "low": f"{low:.4g}",
                        "high": f"{high:.4g}", "pass": int(ok), "note": note})
 
     base_phi = stats["base"]["friction_angle_deg"][0]
     base_ratio = stats["base"]["steady_ratio"][0]
     for c in ("base", "box", "stiff"):
-        check(f"{c}: C / pre-shear stress", stats[c]["cohesion_kpa"][0] / PRESHEAR_KPA, -0.03,
-              0.03, "issue 17: |C| below 3% of the pre-shear stress")
+        check(f"{c}: C / pre-shear stress", lambda c=c: stats[c]["cohesion_kpa"][0] / PRESHEAR_KPA,
+              -0.03, 0.03, "issue 17: |C| below 3% of the pre-shear stress", (c,))
     for c in ("box", "stiff"):
-        check(f"{c} / base: phi", stats[c]["friction_angle_deg"][0] / base_phi, 0.95, 1.05,
-              "issue 17: the same within 5%")
-        check(f"{c} / base: steady tau/sigma", stats[c]["steady_ratio"][0] / base_ratio, 0.95, 1.05,
-              "issue 17: the same within 5%")
-    ratio = stats["f2"]["cohesion_kpa"][0] / stats["f1"]["cohesion_kpa"][0]
-    check("C(f2) / C(f1) over F2 / F1", ratio / (FORCES_N["f2"] / FORCES_N["f1"]), 0.9, 1.1,
-          "issue 17: C proportional to the force within 10%")
+        check(f"{c} / base: phi", lambda c=c: stats[c]["friction_angle_deg"][0] / base_phi, 0.95,
+              1.05, "issue 17: the same within 5%", (c,))
+        check(f"{c} / base: steady tau/sigma", lambda c=c: stats[c]["steady_ratio"][0] / base_ratio,
+              0.95, 1.05, "issue 17: the same within 5%", (c,))
+    ratio = (stats["f2"]["cohesion_kpa"][0] / stats["f1"]["cohesion_kpa"][0]
+             if "f1" in stats and "f2" in stats else math.nan)
+    check("C(f2) / C(f1) over F2 / F1", lambda: ratio / (FORCES_N["f2"] / FORCES_N["f1"]), 0.9, 1.1,
+          "issue 17: C proportional to the force within 10%", ("f1", "f2"))
 
     # Supplementary, not issue 17's wording: the cohesive part of the strength, i.e. the mean over
     # the failure stresses of tau(f) - tau(base), should double with the force as well. Unlike the
@@ -139,15 +169,20 @@ def main(argv):
         print(f"cohesive excess over base, mean over {len(sigmas)} failure stresses: "
               f"f1 {excess['f1']:.3f} kPa, f2 {excess['f2']:.3f} kPa")
         check("excess(f2) / excess(f1) over F2 / F1",
-              excess["f2"] / excess["f1"] / (FORCES_N["f2"] / FORCES_N["f1"]), 0.9, 1.1,
+              lambda: excess["f2"] / excess["f1"] / (FORCES_N["f2"] / FORCES_N["f1"]), 0.9, 1.1,
               "supplementary: the strength above the dry spheres' grows with the force, "
               "proportional within 10%")
+    else:
+        check("excess(f2) / excess(f1) over F2 / F1", None, 0.9, 1.1,
+              "supplementary: the strength above the dry spheres' grows with the force, "
+              "proportional within 10%", ("f1", "f2"))
     # Reported, not checked: the failure stresses themselves of the larger box and of 10x k_n
     # against the base cell's, stress by stress (what the fitted C and phi summarise).
     for c in ("box", "stiff"):
-        print_failure_ratios(c, failure_points(out, c), "base", base_pts)
+        if c in stats:
+            print_failure_ratios(c, failure_points(out, c), "base", base_pts)
     # Reported, not checked: the optional configs.
-    if "f4" in stats:
+    if "f4" in stats and "f2" in stats:
         c_ratio = stats["f4"]["cohesion_kpa"][0] / stats["f2"]["cohesion_kpa"][0]
         print(f"C(f4) / C(f2) over F4 / F2: {c_ratio / (FORCES_N['f4'] / FORCES_N['f2']):.3f} "
               f"(C(f2) / C(f1) over F2 / F1: {ratio / (FORCES_N['f2'] / FORCES_N['f1']):.3f}; "
@@ -161,16 +196,18 @@ def main(argv):
             e4 = statistics.fmean(f4_pts[s] - base_pts[s] for s in common)
             print(f"cohesive excess over base: f4 {e4:.3f} kPa; excess(f4) / excess(f2) over F4 / F2: "
                   f"{e4 / e2 / (FORCES_N['f4'] / FORCES_N['f2']):.3f} (reported, not checked)")
-    if "box2" in stats:
-        print(f"phi box2 / box: {stats['box2']['friction_angle_deg'][0] / stats['box']['friction_angle_deg'][0]:.3f}, "
+    if "box2" in stats and "box" in stats:
+        print(f"cells: base {cells['base']:g}, box {cells['box']:g}, box2 {cells['box2']:g} diameters; "
+              f"phi box2 / box: {stats['box2']['friction_angle_deg'][0] / stats['box']['friction_angle_deg'][0]:.3f}, "
               f"box2 / base: {stats['box2']['friction_angle_deg'][0] / base_phi:.3f}; steady tau/sigma "
-              f"box2 / box: {stats['box2']['steady_ratio'][0] / stats['box']['steady_ratio'][0]:.3f} "
-              "(reported, not checked)")
+              f"box2 / box: {stats['box2']['steady_ratio'][0] / stats['box']['steady_ratio'][0]:.3f}, "
+              f"box2 / base: {stats['box2']['steady_ratio'][0] / base_ratio:.3f} (reported, not checked)")
         print_failure_ratios("box2", failure_points(out, "box2"), "box", failure_points(out, "box"))
     print(f"steady tau/sigma against the one published 3D DEM value "
           f"({LITERATURE_STEADY_RATIO}, Latham et al. 2005): base "
-          f"{base_ratio / LITERATURE_STEADY_RATIO:.3f}, box "
-          f"{stats['box']['steady_ratio'][0] / LITERATURE_STEADY_RATIO:.3f} (reported, not checked)")
+          f"{base_ratio / LITERATURE_STEADY_RATIO:.3f}"
+          + (f", box {stats['box']['steady_ratio'][0] / LITERATURE_STEADY_RATIO:.3f}" if "box" in stats else "")
+          + " (reported, not checked)")
 
     with open(os.path.join(out, "checks.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(checks[0]))
@@ -178,9 +215,12 @@ def main(argv):
         w.writerows(checks)
     failed = 0
     for ch in checks:
-        print(f"{'pass' if ch['pass'] else 'FAIL'}  {ch['check']}: {ch['value']} in "
-              f"[{ch['low']}, {ch['high']}]  ({ch['note']})")
-        failed += 0 if ch["pass"] else 1
+        verdict = "NOT RUN" if ch["pass"] == "-" else ("pass" if ch["pass"] else "FAIL")
+        print(f"{verdict}  {ch['check']}: {ch['value']} in [{ch['low']}, {ch['high']}]  ({ch['note']})")
+        failed += 1 if ch["pass"] == 0 else 0
+    if missing:
+        print(f"spheres_check: no finished run for {', '.join(missing)} in {out}", file=sys.stderr)
+        return 2
     return 1 if failed else 0
 
 
