@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "scenario/shear_cell.hpp"
+
 namespace silodem::app {
 
 struct RunOptions {
@@ -62,7 +64,7 @@ struct ShearTestOptions {
   bool json = false;
   int threads = 0;
   std::uint64_t seed = 1;
-  double width = 10.0, height = 8.0;  // mean CG diameters
+  double width = kDefaultCellWidth, height = kDefaultCellHeight;  // mean CG diameters
   double inertial_number = 2e-3;
   double preshear_strain = 0.5, represhear_strain = 0.2, failure_strain = 0.25;
   std::string failure = "peak-ratio";  // the failure point of a shear: peak-ratio | peak-tau

@@ -178,10 +178,14 @@ int main(int argc, char** argv) {
   shear_cmd->add_option("--threads", shear.threads, "OpenMP threads (default: the case's)")
       ->check(CLI::Range(0, 1024));
   shear_cmd->add_option("--seed", shear.seed, "seed of the sample (default 1)");
-  shear_cmd->add_option("--width", shear.width, "cell side, mean CG diameters (default 10)")
+  shear_cmd
+      ->add_option("--width", shear.width,
+                   fmt::format("cell side, mean CG diameters (default {:g})", kDefaultCellWidth))
       ->check(CLI::Range(2.0, 1000.0));
   shear_cmd
-      ->add_option("--height", shear.height, "sheared sample height, mean CG diameters (default 8)")
+      ->add_option("--height", shear.height,
+                   fmt::format("sheared sample height, mean CG diameters (default {:g})",
+                               kDefaultCellHeight))
       ->check(CLI::Range(2.0, 1000.0));
   shear_cmd
       ->add_option("--inertial-number", shear.inertial_number,

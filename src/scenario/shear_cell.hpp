@@ -13,8 +13,8 @@
 // again, stop, lower the normal stress, and shear to failure; the failure point is where the
 // mobilised friction tau / sigma peaks (or, as before 2026-12-05, the shear stress:
 // yield_locus.hpp's FailureCriterion says why).
-// Gravity is off in the cell: the plates set the stress (at 3 kPa the weight of an 8-diameter
-// k = 3 sample would add about 1 kPa from top to bottom).
+// Gravity is off in the cell: the plates set the stress (at 3 kPa the weight of an 11-diameter
+// k = 3 sample would add about 1.4 kPa from top to bottom).
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -26,11 +26,17 @@
 
 namespace silodem {
 
+inline constexpr double kDefaultCellWidth = 14.0;   // mean CG diameters
+inline constexpr double kDefaultCellHeight = 11.0;  // mean CG diameters
+
 struct ShearTestSpec {
   double preshear = 9e3;                                 // Pa
   std::vector<double> normals{7e3, 6e3, 5e3, 4e3, 3e3};  // Pa, each below the pre-shear
-  double width = 10.0;                                   // cell side, mean CG diameters
-  double height = 8.0;             // sheared sample between the glued layers, mean CG diameters
+  // Cell side and sheared height (between the glued layers), mean CG diameters. 14 x 11: the
+  // smallest of the sizes tried whose friction angle does not change with size
+  // (docs/validation/shear-cell.md 5.1; 10 x 8 was the default before 2026-12-06).
+  double width = kDefaultCellWidth;
+  double height = kDefaultCellHeight;
   double inertial_number = 2e-3;   // of the shear at the lowest normal stress
   double preshear_strain = 0.5;    // the first pre-shear (shear displacement / sheared height)
   double represhear_strain = 0.2;  // each later pre-shear
