@@ -61,16 +61,19 @@ def main():
     a.plot([0, EXP_TIME], [0, EXP_MASS], "k--", lw=1, label="experiment's mean rate (0.335 kg/s)")
     a.plot([EXP_TIME], [EXP_MASS], "ks", label="experiment: 30.2 kg in 90 s")
     b.axhline(EXP_MASS / EXP_TIME, color="k", ls="--", lw=1)
-    for label, d in runs():
+    found = list(runs())
+    colours = plt.cm.tab20(range(len(found)))  # one colour a run (the default cycle has ten)
+    for (label, d), colour in zip(found, colours):
         rows = list(csv.DictReader(open(d / "outlet.csv")))
         s = json.load(open(d / "summary.json"))
         t = [float(r["t_end_s"]) for r in rows]
-        a.plot([0] + t, [0] + [float(r["cumulative_kg"]) for r in rows], label=f"factor {label}")
+        a.plot([0] + t, [0] + [float(r["cumulative_kg"]) for r in rows], label=f"factor {label}",
+               color=colour)
         b.step([float(r["t_start_s"]) for r in rows], [float(r["rate_kg_s"] or 0) for r in rows],
-               where="post")
+               where="post", color=colour)
         cal = [(float(r["t_start_s"]) + 0.5, float(r["calorific_kcal_kg"])) for r in rows
                if r["calorific_kcal_kg"] not in ("", "nan")]
-        c.plot([x for x, _ in cal], [y for _, y in cal], ".-", ms=3)
+        c.plot([x for x, _ in cal], [y for _, y in cal], ".-", ms=3, color=colour)
         mass, time, rate = s["discharged_mass_kg"], s["discharge_time_s"], s["mean_rate_kg_s"]
         # Issue 16 must-show 4: mass within 5%, time and mean rate within 10% of the experiment.
         band = [abs(mass / EXP_MASS - 1) <= 0.05, abs(time / EXP_TIME - 1) <= 0.10,

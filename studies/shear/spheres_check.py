@@ -5,7 +5,8 @@ usage: spheres_check.py OUT   (OUT as written by studies/shear/spheres_check.sh)
 
 Reads OUT/<config>_seed=<n>/shear_test.json for the configs base, box, stiff, f1, f2, takes the
 mean over the seeds found, prints a table and the checks, writes OUT/checks.csv, and exits 1 if a
-check fails (2 if a config has no finished run, or if the cells do not fit together). The optional
+check fails, else 2 if a config has no finished run (its checks are written as not run), and 2
+without checks if base has no run or the cells do not fit together. The optional
 configs f4 (F = 0.60 N) and box2 (a third cell size), if OUT holds them, are reported beside the
 checks, not checked: whether C grows in proportion to the force from f2 to f4, and whether phi
 settles with the cell's size.
@@ -173,7 +174,7 @@ def main(argv):
               "supplementary: the strength above the dry spheres' grows with the force, "
               "proportional within 10%")
     else:
-        check("excess(f2) / excess(f1) over F2 / F1", None, 0.9, 1.1,
+        check("excess(f2) / excess(f1) over F2 / F1", lambda: math.nan, 0.9, 1.1,
               "supplementary: the strength above the dry spheres' grows with the force, "
               "proportional within 10%", ("f1", "f2"))
     # Reported, not checked: the failure stresses themselves of the larger box and of 10x k_n
@@ -182,7 +183,7 @@ def main(argv):
         if c in stats:
             print_failure_ratios(c, failure_points(out, c), "base", base_pts)
     # Reported, not checked: the optional configs.
-    if "f4" in stats and "f2" in stats:
+    if all(c in stats for c in ("f1", "f2", "f4")):
         c_ratio = stats["f4"]["cohesion_kpa"][0] / stats["f2"]["cohesion_kpa"][0]
         print(f"C(f4) / C(f2) over F4 / F2: {c_ratio / (FORCES_N['f4'] / FORCES_N['f2']):.3f} "
               f"(C(f2) / C(f1) over F2 / F1: {ratio / (FORCES_N['f2'] / FORCES_N['f1']):.3f}; "
@@ -218,10 +219,12 @@ def main(argv):
         verdict = "NOT RUN" if ch["pass"] == "-" else ("pass" if ch["pass"] else "FAIL")
         print(f"{verdict}  {ch['check']}: {ch['value']} in [{ch['low']}, {ch['high']}]  ({ch['note']})")
         failed += 1 if ch["pass"] == 0 else 0
+    if failed:
+        return 1
     if missing:
         print(f"spheres_check: no finished run for {', '.join(missing)} in {out}", file=sys.stderr)
         return 2
-    return 1 if failed else 0
+    return 0
 
 
 if __name__ == "__main__":

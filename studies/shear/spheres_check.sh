@@ -18,7 +18,7 @@
 # with SEEDS seeds each (default 3). CONFIGS (environment) names the configs to run, default
 # "base f1 f2 box stiff" (issue 17's checks); f4 and box2 are run on request and reported beside
 # them. Then studies/shear/spheres_check.py compares the seeds' means with the tolerances of issue
-# 17 and writes OUT/checks.csv; exit 1 if a check fails.
+# 17 and writes OUT/checks.csv; exit 1 if a check fails, else 2 if a config has no finished run.
 # Resumable: a run whose shear_test.json exists is skipped. JOBS runs side by side (environment,
 # default 2), one thread each.
 # Cost: about 3 min of one core per run in the 10 x 8 cell (box2); base, f1, f2 and f4 about 2.5x
