@@ -140,9 +140,9 @@ def main(argv):
             checks.append({"check": name, "value": "not run", "low": f"{low:.4g}",
                            "high": f"{high:.4g}", "pass": "-", "note": note})
             return
-        ok = low <= value() <= high
-        checks.append({"check": name, "value": f"{value():.4g}", "low": f"{low:.4g}",
-                       "high": f"{high:.4g}", "pass": int(ok), "note": note})
+        v = value()
+        checks.append({"check": name, "value": f"{v:.4g}", "low": f"{low:.4g}",
+                       "high": f"{high:.4g}", "pass": int(low <= v <= high), "note": note})
 
     base_phi = stats["base"]["friction_angle_deg"][0]
     base_ratio = stats["base"]["steady_ratio"][0]
