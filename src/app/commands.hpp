@@ -66,7 +66,8 @@ struct ShearTestOptions {
   std::uint64_t seed = 1;
   double width = kDefaultCellWidth, height = kDefaultCellHeight;  // mean CG diameters
   double inertial_number = 2e-3;
-  double preshear_strain = 0.5, represhear_strain = 0.2, failure_strain = 0.25;
+  double preshear_strain = 0.5, preshear_max_strain = 2.0, represhear_strain = 0.2,
+         failure_strain = 0.25;
   std::string failure = "peak-ratio";  // the failure point of a shear: peak-ratio | peak-tau
   std::string refit;                  // a finished test's DIR: its series evaluated again (no case)
   bool failure_strain_given = false;  // --failure-strain on the command line

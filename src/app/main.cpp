@@ -193,8 +193,13 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1e-6, 0.1));
   shear_cmd
       ->add_option("--preshear-strain", shear.preshear_strain,
-                   "strain of the first pre-shear (default 0.5)")
+                   "least strain of the first pre-shear (default 0.5)")
       ->check(CLI::Range(0.01, 10.0));
+  shear_cmd
+      ->add_option("--preshear-max-strain", shear.preshear_max_strain,
+                   "the first pre-shear goes on until steady, at most to this strain (default "
+                   "2; equal to --preshear-strain: a fixed strain, as before 2026-12-07)")
+      ->check(CLI::Range(0.01, 20.0));
   shear_cmd
       ->add_option("--represhear-strain", shear.represhear_strain,
                    "strain of each later pre-shear (default 0.2)")
@@ -220,7 +225,7 @@ int main(int argc, char** argv) {
   // What a refit cannot change: the test was run with its own values of these.
   for (const char* name :
        {"--preshear", "--normal", "--coal", "--threads", "--seed", "--width", "--height",
-        "--inertial-number", "--preshear-strain", "--represhear-strain"})
+        "--inertial-number", "--preshear-strain", "--preshear-max-strain", "--represhear-strain"})
     refit_opt->excludes(shear_cmd->get_option(name));
   refit_opt->excludes(set_opt);
 

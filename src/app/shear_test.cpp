@@ -89,6 +89,7 @@ nlohmann::json result_json(const ShearTestResult& r, const CoalProperties& coal,
       {"preshear_kpa", {r.preshear.sigma / 1e3, r.preshear.tau / 1e3}},
       {"preshear_points", pre},
       {"preshear_steady", r.preshear_steady},
+      {"preshear_strain", r.preshear_strain},
       {"measured",
        {{"cohesion_kpa", coal.cohesion / 1e3},
         {"friction_angle_deg", coal.friction_angle / units::deg},
@@ -291,6 +292,7 @@ int shear_test_command(const ShearTestOptions& o) {
   spec.height = o.height;
   spec.inertial_number = o.inertial_number;
   spec.preshear_strain = o.preshear_strain;
+  spec.preshear_max_strain = o.preshear_max_strain;
   spec.represhear_strain = o.represhear_strain;
   spec.failure_strain = o.failure_strain;
 
@@ -336,6 +338,8 @@ int shear_test_command(const ShearTestOptions& o) {
                                }()},
                               {"failure_criterion", failure_criterion_name(spec.failure)},
                               {"failure_strain", spec.failure_strain},
+                              {"preshear_min_strain", spec.preshear_strain},
+                              {"preshear_max_strain", spec.preshear_max_strain},
                               {"coals", all}};
   return finish(doc, out, o.json);
 }

@@ -71,6 +71,31 @@ void check_shear_spec(const ShearTestSpec& spec) {
                        fmt::format("{:g} kPa: each normal stress must lie in (0, {:g}) kPa, below "
                                    "the pre-shear stress",
                                    s / 1e3, spec.preshear / 1e3));
+  if (!(spec.preshear_max_strain >= spec.preshear_strain))
+    throw InputError({}, "--preshear-max-strain",
+                     fmt::format("{:g}: must be at least the first pre-shear's least strain "
+                                 "(--preshear-strain, {:g})",
+                                 spec.preshear_max_strain, spec.preshear_strain));
+}
+
+bool shear_is_steady(const std::vector<ShearSample>& rows, std::size_t per_window,
+                     const ShearTestSpec& spec) {
+  const std::size_t n = rows.size();
+  if (per_window == 0 || n < 2 * per_window) return false;
+  struct Mean {
+    double sigma = 0, tau = 0, height = 0;
+  };
+  auto mean = [&](std::size_t i0) {
+    Mean m;
+    for (std::size_t i = i0; i < i0 + per_window; ++i)
+      m.sigma += rows[i].sigma, m.tau += rows[i].tau, m.height += rows[i].height;
+    return m;  // sums: the ratios below do not need the count
+  };
+  const Mean last = mean(n - per_window), before = mean(n - 2 * per_window);
+  if (!(last.height > 0 && last.sigma > 0 && before.sigma > 0)) return false;
+  const double r_last = last.tau / last.sigma, r_before = before.tau / before.sigma;
+  return std::abs(last.height - before.height) < spec.steady_height_change * last.height &&
+         std::abs(r_last - r_before) < spec.steady_ratio_change * std::abs(r_last);
 }
 
 ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
@@ -218,43 +243,57 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
       std::max(1L, long(std::llround(spec.sample_strain * h_shear / v_shear / s.dt)));
   const double v_cap = 0.5 * v_shear;  // the lid's normal speed, at most half the shear speed
 
-  // Shears at `sigma` by `strain`; returns the rows.
-  auto shear = [&](const std::string& phase, int point, double sigma, double strain) {
+  // Shears at `sigma` by `strain`, then on in steps of spec.steady_step while `settled` (if
+  // given) says no and the strain is below `max_strain`; returns the rows.
+  using Settled = std::function<bool(const std::vector<ShearSample>&)>;
+  auto shear = [&](const std::string& phase, int point, double sigma, double strain,
+                   double max_strain, const Settled& settled) {
     servo(sigma, v_shear, v_cap);
     const double x0 = cell.lid().displacement().x;
-    std::vector<StressPoint> rows;
-    std::vector<double> strains;
-    while (cell.lid().displacement().x - x0 < strain * h_shear) {
-      const StressPoint st = cell.run(per_row);
-      const double g = (cell.lid().displacement().x - x0) / h_shear;
-      record(phase, point, g, st);
-      rows.push_back(st);
-      strains.push_back(g);
+    std::vector<ShearSample> rows;
+    for (double target = strain;;) {
+      while (cell.lid().displacement().x - x0 < target * h_shear) {
+        const StressPoint st = cell.run(per_row);
+        record(phase, point, (cell.lid().displacement().x - x0) / h_shear, st);
+        rows.push_back(res.series.back());
+      }
+      if (!settled || target >= max_strain || settled(rows)) break;
+      target = std::min(max_strain, target + spec.steady_step);
     }
     log(fmt::format("{} {} at {:g} kPa: strain {:.2f} done, t = {:.3f} s, {} steps", phase, point,
-                    sigma / 1e3, strain, S.time(), S.step_count()));
-    return std::make_pair(rows, strains);
+                    sigma / 1e3, rows.empty() ? 0.0 : rows.back().strain, S.time(),
+                    S.step_count()));
+    return rows;
   };
-  // The end of a pre-shear: the mean of its last third; steady if the last sixth and the one
-  // before agree within 5%.
-  auto preshear_end = [](const std::vector<StressPoint>& rows, bool& steady) {
-    const std::size_t n = rows.size(), a = n - n / 3, b = n - n / 6;
-    auto mean = [&](std::size_t i0, std::size_t i1) {
-      StressPoint m;
-      for (std::size_t i = i0; i < i1; ++i) m.sigma += rows[i].sigma, m.tau += rows[i].tau;
-      const double k = double(std::max<std::size_t>(1, i1 - i0));
-      return StressPoint{m.sigma / k, m.tau / k};
-    };
-    const StressPoint last = mean(b, n), before = mean(n - 2 * (n - b), b);
-    steady = std::abs(last.tau - before.tau) < 0.05 * std::abs(last.tau);
-    return mean(a, n);
+  // Rows in a window of `strain`.
+  auto rows_in = [&](double strain) {
+    return std::size_t(std::max(1L, std::lround(strain / spec.sample_strain)));
+  };
+  const std::size_t per_window = rows_in(spec.steady_window);
+  // The end of a pre-shear: the mean of its last third, at most of its last steady window.
+  auto preshear_end = [&](const std::vector<ShearSample>& rows) {
+    const std::size_t n = rows.size(), a = n - std::min(n / 3, per_window);
+    StressPoint m;
+    for (std::size_t i = a; i < n; ++i) m.sigma += rows[i].sigma, m.tau += rows[i].tau;
+    const double k = double(std::max<std::size_t>(1, n - a));
+    return StressPoint{m.sigma / k, m.tau / k};
   };
 
-  // 3. The first pre-shear, then the bulk density between the glued layers.
-  auto [rows0, g0] = shear("preshear", 0, spec.preshear, spec.preshear_strain);
-  bool steady0 = false;
-  const StressPoint pre0 = preshear_end(rows0, steady0);
-  res.preshear_steady = steady0;
+  // 3. The first pre-shear, until steady; then the bulk density between the glued layers.
+  const auto rows0 = shear("preshear", 0, spec.preshear, spec.preshear_strain,
+                           spec.preshear_max_strain, [&](const std::vector<ShearSample>& rows) {
+                             return shear_is_steady(rows, per_window, spec);
+                           });
+  const StressPoint pre0 = preshear_end(rows0);
+  res.preshear_steady = shear_is_steady(rows0, per_window, spec);
+  res.preshear_strain = rows0.empty() ? 0.0 : rows0.back().strain;
+  if (!res.preshear_steady)
+    res.warnings.push_back(fmt::format(
+        "the first pre-shear was not steady by a strain of {:.2f} (--preshear-max-strain): the "
+        "sample height or tau / sigma still changed by more than {:g}% or {:g}% over {:g} of "
+        "strain",
+        res.preshear_strain, 100 * spec.steady_height_change, 100 * spec.steady_ratio_change,
+        spec.steady_window));
   {
     const double a = d_mean, b = cell.lid_z() - d_mean;
     double v = 0;
@@ -273,13 +312,15 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
     const double sigma = spec.normals[k];
     // Back to the pre-shear stress first (the servo's speed is capped while it shears).
     hold("consolidate", point, spec.preshear);
-    auto [rows, gs] = shear("preshear", point, spec.preshear, spec.represhear_strain);
+    const auto rows = shear("preshear", point, spec.preshear, spec.represhear_strain, 0.0, nullptr);
     ShearPoint sp;
     sp.sigma_target = sigma;
-    sp.preshear = preshear_end(rows, sp.preshear_steady);
+    sp.preshear = preshear_end(rows);
+    // Steady over its two halves (a later pre-shear is shorter than two windows).
+    sp.preshear_steady = shear_is_steady(rows, std::min(per_window, rows.size() / 2), spec);
     pre_sum.sigma += sp.preshear.sigma, pre_sum.tau += sp.preshear.tau, ++n_pre;
     hold("relax", point, sigma);
-    shear("shear", point, sigma, spec.failure_strain);
+    shear("shear", point, sigma, spec.failure_strain, 0.0, nullptr);
     res.points.push_back(sp);
   }
   res.preshear = {pre_sum.sigma / n_pre, pre_sum.tau / n_pre};

@@ -16,6 +16,7 @@
 // Gravity is off in the cell: the plates set the stress (at 3 kPa the weight of an 11-diameter
 // k = 3 sample would add about 1.4 kPa from top to bottom).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -37,11 +38,20 @@ struct ShearTestSpec {
   // (docs/validation/shear-cell.md 5.1; 10 x 8 was the default before 2026-12-06).
   double width = kDefaultCellWidth;
   double height = kDefaultCellHeight;
-  double inertial_number = 2e-3;   // of the shear at the lowest normal stress
-  double preshear_strain = 0.5;    // the first pre-shear (shear displacement / sheared height)
-  double represhear_strain = 0.2;  // each later pre-shear
-  double failure_strain = 0.25;    // each shear to failure
-  double sample_strain = 0.005;    // strain per row of the series
+  double inertial_number = 2e-3;  // of the shear at the lowest normal stress
+  // The first pre-shear runs at least preshear_strain (shear displacement / sheared height),
+  // then on in steps of steady_step until it is steady (shear_is_steady over windows of
+  // steady_window) or reaches preshear_max_strain (== preshear_strain: a fixed strain, the
+  // procedure before 2026-12-07).
+  double preshear_strain = 0.5;
+  double preshear_max_strain = 2.0;
+  double steady_step = 0.1;
+  double steady_window = 0.2;
+  double steady_height_change = 0.005;  // relative, between two windows
+  double steady_ratio_change = 0.10;    // relative, of tau / sigma between two windows
+  double represhear_strain = 0.2;       // each later pre-shear
+  double failure_strain = 0.25;         // each shear to failure
+  double sample_strain = 0.005;         // strain per row of the series
   FailureCriterion failure = FailureCriterion::PeakRatio;
   std::uint64_t seed = 1;
   int threads = 0;
@@ -71,7 +81,8 @@ struct ShearTestResult {
   double shear_velocity = 0.0, dt = 0.0;            // m/s, s
   double bulk_density = 0.0, solid_fraction = 0.0;  // between the glued layers, after pre-shear
   StressPoint preshear;                             // mean over all pre-shears (the end of each)
-  bool preshear_steady = false;  // the first pre-shear reached a steady shear stress
+  bool preshear_steady = false;  // the first pre-shear ended steady (shear_is_steady)
+  double preshear_strain = 0.0;  // the strain the first pre-shear ran
   std::vector<ShearPoint> points;
   YieldLocus locus;
   std::vector<ShearSample> series;
@@ -82,8 +93,19 @@ struct ShearTestResult {
 using ShearProgress = std::function<void(const std::string&)>;
 
 // Throws InputError for a spec the test cannot run: fewer than two normal stresses, or one not
-// in (0, pre-shear).
+// in (0, pre-shear); a first pre-shear's largest strain below its least.
 void check_shear_spec(const ShearTestSpec& spec);
+
+// Steady shear (ASTM D7891; Schulze, Powders and Bulk Solids, ch. 3: the pre-shear goes on until
+// the shear stress is constant, which is steady-state flow at a constant bulk density): the last
+// `per_window` rows of a shear and the `per_window` rows before them have mean sample heights
+// within spec.steady_height_change of each other and mobilised friction (mean tau over mean
+// sigma) within spec.steady_ratio_change, both relative to the last window's. The height is the
+// quieter sign in a small cell, whose stresses swing as force chains form and buckle; a sample
+// that still compacts or dilates is not steady whatever its stresses. False with fewer than
+// 2 per_window rows, or per_window 0.
+bool shear_is_steady(const std::vector<ShearSample>& rows, std::size_t per_window,
+                     const ShearTestSpec& spec);
 
 // The failure points and the yield locus from the series: each point's shear rows (phase
 // "shear") give its failure point by spec.failure, and the locus is fitted through them with

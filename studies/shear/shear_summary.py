@@ -3,7 +3,9 @@
 
 usage: shear_summary.py DIR [DIR ...]   prints, per coal of each DIR/shear_test.json: C, phi (each
 with the fit's standard error), the
-steady tau/sigma of the first pre-shear (mean of the series beyond a strain of 0.25), f_c,
+steady tau/sigma of the first pre-shear (mean of the series beyond a strain of 0.25 and over at
+most its last 0.3: the first pre-shear was 0.5 long before 2026-12-07 and now runs until steady),
+f_c,
 sigma_1, ffc, bulk density and wall time, as CSV on stdout; and, for the paper's two coals, each
 failure shear stress over the measured yield locus C + sigma tan(phi) at the same normal stress
 (Table 1 of the paper, PHYSICS.md: Longwanggou 0.67 kPa, 33.4 deg; Indonesian 0.68 kPa, 37.2 deg),
@@ -16,17 +18,21 @@ import os
 import sys
 
 
-def steady_ratio(series_path, from_strain=0.25):
-    """Mean tau / mean sigma of the first pre-shear beyond from_strain (nan if absent)."""
-    taus, sigmas = [], []
+def steady_ratio(series_path, from_strain=0.25, last_strain=0.3):
+    """Mean tau / mean sigma of the first pre-shear beyond from_strain, over at most its last
+    last_strain (nan if absent)."""
+    rows = []
     with open(series_path, newline="") as f:
         for row in csv.DictReader(f):
-            if row["phase"] == "preshear" and row["point"] == "0" and float(row["strain"]) > from_strain:
-                taus.append(float(row["tau_kpa"]))
-                sigmas.append(float(row["sigma_kpa"]))
-    if not taus:
+            if row["phase"] == "preshear" and row["point"] == "0":
+                rows.append((float(row["strain"]), float(row["tau_kpa"]), float(row["sigma_kpa"])))
+    if not rows:
         return math.nan
-    return (sum(taus) / len(taus)) / (sum(sigmas) / len(sigmas))
+    end = rows[-1][0]
+    kept = [(t, s) for g, t, s in rows if g > max(from_strain, end - last_strain)]
+    if not kept:
+        return math.nan
+    return (sum(t for t, _ in kept) / len(kept)) / (sum(s for _, s in kept) / len(kept))
 
 
 MEASURED_LOCUS = {"Longwanggou": (0.67, 33.4), "Indonesian": (0.68, 37.2)}  # kPa, deg (Table 1)

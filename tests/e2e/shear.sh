@@ -11,7 +11,8 @@ fail=0
 bad() { printf 'FAIL: %s\n' "$*"; fail=1; }
 case_file="$src/tests/data/frictionless_spheres.toml"
 quick=(--preshear 2 --normal 1.5,1 --width 5 --height 4 --inertial-number 0.01
-       --preshear-strain 0.1 --represhear-strain 0.05 --failure-strain 0.05 --threads 2)
+       --preshear-strain 0.1 --preshear-max-strain 0.2 --represhear-strain 0.05
+       --failure-strain 0.05 --threads 2)
 
 "$bin" shear-test "$case_file" --out "$work/st" "${quick[@]}" --json > "$work/out.json" 2> "$work/err.txt"
 rc=$?
@@ -50,6 +51,16 @@ assert [x["kind"] for x in rows] == ["preshear", "failure", "preshear", "failure
 series = list(csv.DictReader(open(w + "/st/series_glass.csv")))
 phases = {x["phase"] for x in series}
 assert {"compress", "consolidate", "preshear", "relax", "shear"} <= phases, phases
+# the first pre-shear ran past --preshear-strain to --preshear-max-strain: it cannot be steady
+# before two windows of 0.2 of strain, so it goes on (a step of 0.1) to the largest strain and
+# says so; the JSON reports the strain it ran, the series' last row of it
+assert doc["preshear_min_strain"] == 0.1 and doc["preshear_max_strain"] == 0.2, doc
+first = [float(x["strain"]) for x in series if x["phase"] == "preshear" and x["point"] == "0"]
+g = r["preshear_strain"]
+assert abs(first[-1] - g) < 1e-9, (first[-1], g)
+assert 0.2 <= g < 0.2 + 0.011, g
+assert not r["preshear_steady"], r
+assert r["preshear_steady"] == (not any("first pre-shear was not steady" in w for w in r["warnings"])), r
 PY
 
 # --refit evaluates the recorded series again without running. Each failure point must be the
@@ -128,4 +139,8 @@ expect_input_error "normal above pre-shear" "--normal" --out "$work/b1" --normal
 expect_input_error "not a number" "'x'" --out "$work/b2" --normal 3,x
 expect_input_error "unknown coal" "not a coal of the case" --out "$work/b3" --coal coke
 expect_input_error "out not empty" "not empty" --out "$work/st"
+expect_input_error "first pre-shear's largest strain below its least" "--preshear-max-strain" \
+  --out "$work/b4" --preshear-strain 0.5 --preshear-max-strain 0.4
+expect_refit_error "refit with --preshear-max-strain" "excludes" --refit "$work/st" --out "$work/rb6" \
+  --preshear-max-strain 1
 exit $fail

@@ -27,6 +27,7 @@ TEST(ShearCell, FrictionlessSpheresHaveThePeyneauRouxFrictionAndNoCohesion) {
   spec.height = 6;
   spec.inertial_number = 1e-3;
   spec.preshear_strain = 0.4;
+  spec.preshear_max_strain = 0.4;  // a fixed first pre-shear: this test reads it beyond 0.2
   spec.represhear_strain = 0.1;
   spec.failure_strain = 0.15;
   const ShearTestResult r = run_shear_test(c, report, model, 0, spec, {});
