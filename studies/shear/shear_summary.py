@@ -76,6 +76,10 @@ def rows(run_dir):
             "locus_ratio_max": max(ratios),
             "particles": c["cell"]["particles"],
             "cell_width_d": c["cell"]["width_mm"] / c["cell"]["mean_cg_diameter_mm"],
+            # the first pre-shear: "fixed" (to one strain: every test before 2026-12-07, whose
+            # JSON has no preshear_max_strain) or "steady" (on until steady, at most to the max)
+            "first_preshear": "steady" if doc.get("preshear_max_strain", 0.0)
+            > doc.get("preshear_min_strain", 0.0) else "fixed",
             "wall_time_s": c["cell"]["wall_time_s"],
         }
 

@@ -100,6 +100,12 @@ def main(argv):
     if "base" in missing:
         print(f"spheres_check: no finished run of base in {out}", file=sys.stderr)
         return 2
+    procedures = sorted({r["first_preshear"] for rs in runs.values() for r in rs})
+    if len(procedures) > 1:
+        print(f"spheres_check: the runs in {out} mix first pre-shears {procedures} (fixed: before "
+              "2026-12-07; add seeds to such a folder with SHEAR_ARGS=\"--preshear-max-strain "
+              "0.5\")", file=sys.stderr)
+        return 2
     cells = {}
     for c, rs in runs.items():
         widths = sorted({round(r["cell_width_d"], 3) for r in rs})

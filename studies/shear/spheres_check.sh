@@ -20,7 +20,9 @@
 # them. Then studies/shear/spheres_check.py compares the seeds' means with the tolerances of issue
 # 17 and writes OUT/checks.csv; exit 1 if a check fails, else 2 if a config has no finished run.
 # Resumable: a run whose shear_test.json exists is skipped. JOBS runs side by side (environment,
-# default 2), one thread each.
+# default 2), one thread each. SHEAR_ARGS (environment) is added to every run: e.g.
+# "--preshear-max-strain 0.5" adds seeds to a folder of runs made with the fixed first pre-shear
+# of before 2026-12-07 (both committed folders; spheres_check.py refuses the two procedures mixed).
 # Cost: about 3 min of one core per run in the 10 x 8 cell (box2); base, f1, f2 and f4 about 2.5x
 # that, box about 5x, stiff about 3x base.
 # Usage: bash studies/shear/spheres_check.sh OUT [SILODEM] [SEEDS]
@@ -45,6 +47,7 @@ declare -A extra=(
   [box2]="--width 10 --height 8"
 )
 read -r -a configs <<<"${CONFIGS:-base f1 f2 box stiff}"
+read -r -a shear_args <<<"${SHEAR_ARGS:-}"
 for name in "${configs[@]}"; do
   [[ -n ${extra[$name]+set} ]] || { echo "unknown config '$name' (base box stiff f1 f2 f4 box2)" >&2; exit 2; }
 done
@@ -59,7 +62,7 @@ run_one() {
   [ -f "$dir/shear_test.json" ] && return 0
   rm -rf "$dir"
   # shellcheck disable=SC2086
-  "$silodem" shear-test "$case_file" --out "$dir" --threads 1 --seed "$seed" --inertial-number 5e-3 ${extra[$name]} \
+  "$silodem" shear-test "$case_file" --out "$dir" --threads 1 --seed "$seed" --inertial-number 5e-3 ${extra[$name]} "${shear_args[@]}" \
     > "$out/${name}_seed=$seed.log" 2>&1 || { echo "failed: $name seed $seed (see $out/${name}_seed=$seed.log)"; return 1; }
   echo "done: $name seed $seed"
 }
