@@ -71,6 +71,7 @@ struct ShearTestOptions {
   std::string failure = "peak-ratio";  // the failure point of a shear: peak-ratio | peak-tau
   std::string refit;                  // a finished test's DIR: its series evaluated again (no case)
   bool failure_strain_given = false;  // --failure-strain on the command line
+  bool preshear_max_strain_given = false;  // without it: the larger of 2 and --preshear-strain
   std::vector<std::string> overrides;
 };
 

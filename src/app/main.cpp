@@ -198,7 +198,8 @@ int main(int argc, char** argv) {
   shear_cmd
       ->add_option("--preshear-max-strain", shear.preshear_max_strain,
                    "the first pre-shear goes on until steady, at most to this strain (default "
-                   "2; equal to --preshear-strain: a fixed strain, as before 2026-12-07)")
+                   "2, or --preshear-strain if larger; equal to --preshear-strain: a fixed "
+                   "strain, as before 2026-12-07)")
       ->check(CLI::Range(0.01, 20.0));
   shear_cmd
       ->add_option("--represhear-strain", shear.represhear_strain,
@@ -263,6 +264,7 @@ int main(int argc, char** argv) {
     }
     if (*shear_cmd) {
       shear.failure_strain_given = shear_cmd->count("--failure-strain") > 0;
+      shear.preshear_max_strain_given = shear_cmd->count("--preshear-max-strain") > 0;
       return app::shear_test_command(shear);
     }
     if (*report_cmd) return app::report_command(report_dir);

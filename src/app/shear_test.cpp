@@ -292,7 +292,9 @@ int shear_test_command(const ShearTestOptions& o) {
   spec.height = o.height;
   spec.inertial_number = o.inertial_number;
   spec.preshear_strain = o.preshear_strain;
-  spec.preshear_max_strain = o.preshear_max_strain;
+  spec.preshear_max_strain = o.preshear_max_strain_given
+                                 ? o.preshear_max_strain
+                                 : std::max(o.preshear_max_strain, o.preshear_strain);
   spec.represhear_strain = o.represhear_strain;
   spec.failure_strain = o.failure_strain;
 

@@ -71,6 +71,11 @@ void check_shear_spec(const ShearTestSpec& spec) {
                        fmt::format("{:g} kPa: each normal stress must lie in (0, {:g}) kPa, below "
                                    "the pre-shear stress",
                                    s / 1e3, spec.preshear / 1e3));
+  if (!(spec.steady_step > 0 && spec.steady_window > 0 && spec.sample_strain > 0))
+    throw InputError({}, "steady_step",
+                     fmt::format("the steady-shear step {:g}, window {:g} and row {:g} of strain "
+                                 "must be positive",
+                                 spec.steady_step, spec.steady_window, spec.sample_strain));
   if (!(spec.preshear_max_strain >= spec.preshear_strain))
     throw InputError({}, "--preshear-max-strain",
                      fmt::format("{:g}: must be at least the first pre-shear's least strain "
@@ -243,50 +248,54 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
       std::max(1L, long(std::llround(spec.sample_strain * h_shear / v_shear / s.dt)));
   const double v_cap = 0.5 * v_shear;  // the lid's normal speed, at most half the shear speed
 
+  // A shear's rows, and how many of them it took to reach its least strain.
+  struct Shear {
+    std::vector<ShearSample> rows;
+    std::size_t least = 0;
+  };
   // Shears at `sigma` by `strain`, then on in steps of spec.steady_step while `settled` (if
-  // given) says no and the strain is below `max_strain`; returns the rows.
+  // given) says no and the strain is below `max_strain`.
   using Settled = std::function<bool(const std::vector<ShearSample>&)>;
   auto shear = [&](const std::string& phase, int point, double sigma, double strain,
                    double max_strain, const Settled& settled) {
     servo(sigma, v_shear, v_cap);
     const double x0 = cell.lid().displacement().x;
-    std::vector<ShearSample> rows;
+    Shear out;
     for (double target = strain;;) {
       while (cell.lid().displacement().x - x0 < target * h_shear) {
         const StressPoint st = cell.run(per_row);
         record(phase, point, (cell.lid().displacement().x - x0) / h_shear, st);
-        rows.push_back(res.series.back());
+        out.rows.push_back(res.series.back());
       }
-      if (!settled || target >= max_strain || settled(rows)) break;
+      if (out.least == 0) out.least = out.rows.size();
+      if (!settled || target >= max_strain || settled(out.rows)) break;
       target = std::min(max_strain, target + spec.steady_step);
     }
     log(fmt::format("{} {} at {:g} kPa: strain {:.2f} done, t = {:.3f} s, {} steps", phase, point,
-                    sigma / 1e3, rows.empty() ? 0.0 : rows.back().strain, S.time(),
+                    sigma / 1e3, out.rows.empty() ? 0.0 : out.rows.back().strain, S.time(),
                     S.step_count()));
-    return rows;
+    return out;
   };
-  // Rows in a window of `strain`.
-  auto rows_in = [&](double strain) {
-    return std::size_t(std::max(1L, std::lround(strain / spec.sample_strain)));
-  };
-  const std::size_t per_window = rows_in(spec.steady_window);
-  // The end of a pre-shear: the mean of its last third, at most of its last steady window.
-  auto preshear_end = [&](const std::vector<ShearSample>& rows) {
-    const std::size_t n = rows.size(), a = n - std::min(n / 3, per_window);
+  const auto per_window =
+      std::size_t(std::max(1L, std::lround(spec.steady_window / spec.sample_strain)));
+  // The end of a pre-shear: the mean of its last rows, as many as a third of its least strain
+  // took (of the whole pre-shear when it ran a fixed strain, as before 2026-12-07).
+  auto preshear_end = [](const Shear& sh) {
+    const std::size_t n = sh.rows.size(), a = n - std::min(n, sh.least / 3);
     StressPoint m;
-    for (std::size_t i = a; i < n; ++i) m.sigma += rows[i].sigma, m.tau += rows[i].tau;
+    for (std::size_t i = a; i < n; ++i) m.sigma += sh.rows[i].sigma, m.tau += sh.rows[i].tau;
     const double k = double(std::max<std::size_t>(1, n - a));
     return StressPoint{m.sigma / k, m.tau / k};
   };
 
   // 3. The first pre-shear, until steady; then the bulk density between the glued layers.
-  const auto rows0 = shear("preshear", 0, spec.preshear, spec.preshear_strain,
-                           spec.preshear_max_strain, [&](const std::vector<ShearSample>& rows) {
-                             return shear_is_steady(rows, per_window, spec);
-                           });
-  const StressPoint pre0 = preshear_end(rows0);
-  res.preshear_steady = shear_is_steady(rows0, per_window, spec);
-  res.preshear_strain = rows0.empty() ? 0.0 : rows0.back().strain;
+  const Shear first = shear("preshear", 0, spec.preshear, spec.preshear_strain,
+                            spec.preshear_max_strain, [&](const std::vector<ShearSample>& rows) {
+                              return shear_is_steady(rows, per_window, spec);
+                            });
+  const StressPoint pre0 = preshear_end(first);
+  res.preshear_steady = shear_is_steady(first.rows, per_window, spec);
+  res.preshear_strain = first.rows.empty() ? 0.0 : first.rows.back().strain;
   if (!res.preshear_steady)
     res.warnings.push_back(fmt::format(
         "the first pre-shear was not steady by a strain of {:.2f} (--preshear-max-strain): the "
@@ -312,12 +321,12 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
     const double sigma = spec.normals[k];
     // Back to the pre-shear stress first (the servo's speed is capped while it shears).
     hold("consolidate", point, spec.preshear);
-    const auto rows = shear("preshear", point, spec.preshear, spec.represhear_strain, 0.0, nullptr);
+    const Shear pre = shear("preshear", point, spec.preshear, spec.represhear_strain, 0.0, nullptr);
     ShearPoint sp;
     sp.sigma_target = sigma;
-    sp.preshear = preshear_end(rows);
+    sp.preshear = preshear_end(pre);
     // Steady over its two halves (a later pre-shear is shorter than two windows).
-    sp.preshear_steady = shear_is_steady(rows, std::min(per_window, rows.size() / 2), spec);
+    sp.preshear_steady = shear_is_steady(pre.rows, std::min(per_window, pre.rows.size() / 2), spec);
     pre_sum.sigma += sp.preshear.sigma, pre_sum.tau += sp.preshear.tau, ++n_pre;
     hold("relax", point, sigma);
     shear("shear", point, sigma, spec.failure_strain, 0.0, nullptr);

@@ -42,7 +42,8 @@ struct ShearTestSpec {
   // The first pre-shear runs at least preshear_strain (shear displacement / sheared height),
   // then on in steps of steady_step until it is steady (shear_is_steady over windows of
   // steady_window) or reaches preshear_max_strain (== preshear_strain: a fixed strain, the
-  // procedure before 2026-12-07).
+  // procedure before 2026-12-07, which gives the same series and points; only the steady flags
+  // follow shear_is_steady).
   double preshear_strain = 0.5;
   double preshear_max_strain = 2.0;
   double steady_step = 0.1;
@@ -93,7 +94,8 @@ struct ShearTestResult {
 using ShearProgress = std::function<void(const std::string&)>;
 
 // Throws InputError for a spec the test cannot run: fewer than two normal stresses, or one not
-// in (0, pre-shear); a first pre-shear's largest strain below its least.
+// in (0, pre-shear); a first pre-shear's largest strain below its least; a steady-shear step,
+// window or row of strain that is not positive.
 void check_shear_spec(const ShearTestSpec& spec);
 
 // Steady shear (ASTM D7891; Schulze, Powders and Bulk Solids, ch. 3: the pre-shear goes on until

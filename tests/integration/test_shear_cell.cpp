@@ -27,7 +27,10 @@ TEST(ShearCell, FrictionlessSpheresHaveThePeyneauRouxFrictionAndNoCohesion) {
   spec.height = 6;
   spec.inertial_number = 1e-3;
   spec.preshear_strain = 0.4;
-  spec.preshear_max_strain = 0.4;  // a fixed first pre-shear: this test reads it beyond 0.2
+  // Every shear counts as steady, so the first pre-shear stops at its least strain, the first
+  // check with two windows of 0.2 (this test reads it beyond 0.2), and not at the largest.
+  spec.preshear_max_strain = 2.0;
+  spec.steady_height_change = spec.steady_ratio_change = 1e9;
   spec.represhear_strain = 0.1;
   spec.failure_strain = 0.15;
   const ShearTestResult r = run_shear_test(c, report, model, 0, spec, {});
@@ -40,6 +43,10 @@ TEST(ShearCell, FrictionlessSpheresHaveThePeyneauRouxFrictionAndNoCohesion) {
   EXPECT_NEAR(tau / sigma, 0.10, 0.05);
   for (const auto& p : r.points) EXPECT_NEAR(p.preshear.sigma, spec.preshear, 0.05 * spec.preshear);
   EXPECT_NEAR(r.locus.cohesion, 0.0, 0.1 * spec.preshear);
+  EXPECT_TRUE(r.preshear_steady);
+  EXPECT_GE(r.preshear_strain, 0.4);
+  EXPECT_LT(r.preshear_strain, 0.4 + 2 * spec.sample_strain);
+  for (const auto& p : r.points) EXPECT_TRUE(p.preshear_steady);  // over the two halves
   EXPECT_GT(r.solid_fraction, 0.55);  // a dense random packing (0.64 for monodisperse spheres)
   EXPECT_LT(r.solid_fraction, 0.70);
 }
