@@ -35,6 +35,22 @@ def steady_ratio(series_path, from_strain=0.25, last_strain=0.3):
     return (sum(t for t, _ in kept) / len(kept)) / (sum(s for _, s in kept) / len(kept))
 
 
+def first_preshear(doc, series_path):
+    """The first pre-shear's procedure: "fixed G" (to the strain G: every test before 2026-12-07,
+    whose JSON has no preshear_max_strain; G from the series, to 0.1) or "steady G0-G1" (on
+    until steady, from the strain G0 to at most G1)."""
+    lo, hi = doc.get("preshear_min_strain"), doc.get("preshear_max_strain")
+    if lo is not None and hi is not None:
+        return f"steady {lo:g}-{hi:g}" if hi > lo else f"fixed {lo:g}"
+    end = math.nan
+    if os.path.exists(series_path):
+        with open(series_path, newline="") as f:
+            for row in csv.DictReader(f):
+                if row["phase"] == "preshear" and row["point"] == "0":
+                    end = float(row["strain"])
+    return f"fixed {round(end, 1):g}"
+
+
 MEASURED_LOCUS = {"Longwanggou": (0.67, 33.4), "Indonesian": (0.68, 37.2)}  # kPa, deg (Table 1)
 
 
@@ -76,10 +92,7 @@ def rows(run_dir):
             "locus_ratio_max": max(ratios),
             "particles": c["cell"]["particles"],
             "cell_width_d": c["cell"]["width_mm"] / c["cell"]["mean_cg_diameter_mm"],
-            # the first pre-shear: "fixed" (to one strain: every test before 2026-12-07, whose
-            # JSON has no preshear_max_strain) or "steady" (on until steady, at most to the max)
-            "first_preshear": "steady" if doc.get("preshear_max_strain", 0.0)
-            > doc.get("preshear_min_strain", 0.0) else "fixed",
+            "first_preshear": first_preshear(doc, series),
             "wall_time_s": c["cell"]["wall_time_s"],
         }
 

@@ -23,7 +23,8 @@
 # default 2), one thread each. SHEAR_ARGS (environment) is added to every run: e.g.
 # "--preshear-max-strain 0.5" adds seeds to a folder of runs made with the fixed first pre-shear
 # of before 2026-12-07 (both committed folders; spheres_check.py refuses the two procedures mixed).
-# Cost: about 3 min of one core per run in the 10 x 8 cell (box2); base, f1, f2 and f4 about 2.5x
+# Cost (with the fixed first pre-shear of 0.5; one that runs to steady state can add up to 55%):
+# about 3 min of one core per run in the 10 x 8 cell (box2); base, f1, f2 and f4 about 2.5x
 # that, box about 5x, stiff about 3x base.
 # Usage: bash studies/shear/spheres_check.sh OUT [SILODEM] [SEEDS]
 set -euo pipefail
@@ -62,7 +63,7 @@ run_one() {
   [ -f "$dir/shear_test.json" ] && return 0
   rm -rf "$dir"
   # shellcheck disable=SC2086
-  "$silodem" shear-test "$case_file" --out "$dir" --threads 1 --seed "$seed" --inertial-number 5e-3 ${extra[$name]} "${shear_args[@]}" \
+  "$silodem" shear-test "$case_file" --out "$dir" --threads 1 --seed "$seed" --inertial-number 5e-3 ${extra[$name]} ${shear_args[@]+"${shear_args[@]}"} \
     > "$out/${name}_seed=$seed.log" 2>&1 || { echo "failed: $name seed $seed (see $out/${name}_seed=$seed.log)"; return 1; }
   echo "done: $name seed $seed"
 }
