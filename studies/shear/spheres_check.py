@@ -7,7 +7,7 @@ Reads OUT/<config>_seed=<n>/shear_test.json for the configs base, box, stiff, f1
 mean over the seeds found, prints a table and the checks, writes OUT/checks.csv, and exits 1 if a
 check fails, else 2 if a config has no finished run (its checks are written as not run), and 2
 without checks if base has no run, the cells do not fit together or the runs mix first
-pre-shears (a fixed strain, and which, or run to steady state). The optional
+pre-shears (fixed ones of two strains, or fixed ones and ones run to steady state). The optional
 configs f4 (F = 0.60 N) and box2 (a third cell size), if OUT holds them, are reported beside the
 checks, not checked: whether C grows in proportion to the force from f2 to f4, and whether phi
 settles with the cell's size.
