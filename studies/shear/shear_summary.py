@@ -18,14 +18,18 @@ import os
 import sys
 
 
-def steady_ratio(series_path, from_strain=0.25, last_strain=0.3):
-    """Mean tau / mean sigma of the first pre-shear beyond from_strain, over at most its last
-    last_strain (nan if absent)."""
-    rows = []
+def first_preshear_rows(series_path):
+    """(strain, tau, sigma) of each row of the first pre-shear ([] if the series is absent)."""
+    if not os.path.exists(series_path):
+        return []
     with open(series_path, newline="") as f:
-        for row in csv.DictReader(f):
-            if row["phase"] == "preshear" and row["point"] == "0":
-                rows.append((float(row["strain"]), float(row["tau_kpa"]), float(row["sigma_kpa"])))
+        return [(float(r["strain"]), float(r["tau_kpa"]), float(r["sigma_kpa"]))
+                for r in csv.DictReader(f) if r["phase"] == "preshear" and r["point"] == "0"]
+
+
+def steady_ratio(rows, from_strain=0.25, last_strain=0.3):
+    """Mean tau / mean sigma of the first pre-shear's rows beyond from_strain, over at most its
+    last last_strain (nan if none)."""
     if not rows:
         return math.nan
     end = rows[-1][0]
@@ -35,19 +39,14 @@ def steady_ratio(series_path, from_strain=0.25, last_strain=0.3):
     return (sum(t for t, _ in kept) / len(kept)) / (sum(s for _, s in kept) / len(kept))
 
 
-def first_preshear(doc, series_path):
+def first_preshear(doc, rows):
     """The first pre-shear's procedure: "fixed G" (to the strain G: every test before 2026-12-07,
-    whose JSON has no preshear_max_strain; G from the series, to 0.1) or "steady G0-G1" (on
+    whose JSON has no preshear_max_strain; G from the series' rows, to 0.1) or "steady G0-G1" (on
     until steady, from the strain G0 to at most G1)."""
     lo, hi = doc.get("preshear_min_strain"), doc.get("preshear_max_strain")
     if lo is not None and hi is not None:
         return f"steady {lo:g}-{hi:g}" if hi > lo else f"fixed {lo:g}"
-    end = math.nan
-    if os.path.exists(series_path):
-        with open(series_path, newline="") as f:
-            for row in csv.DictReader(f):
-                if row["phase"] == "preshear" and row["point"] == "0":
-                    end = float(row["strain"])
+    end = rows[-1][0] if rows else math.nan
     return f"fixed {round(end, 1):g}"
 
 
@@ -71,6 +70,7 @@ def rows(run_dir):
         doc = json.load(f)
     for c in doc["coals"]:
         series = os.path.join(run_dir, f"series_{c['coal']}.csv")
+        first = first_preshear_rows(series)
         ratios = locus_ratios(c["coal"], c["yield_locus"]) or [math.nan]
         yield {
             "run": os.path.basename(os.path.normpath(run_dir)),
@@ -82,7 +82,7 @@ def rows(run_dir):
             "cohesion_stderr_kpa": number_or_nan(c.get("cohesion_stderr_kpa")),
             "friction_angle_stderr_deg": number_or_nan(c.get("friction_angle_stderr_deg")),
             "preshear_kpa": c["preshear_kpa"][0],
-            "steady_ratio": steady_ratio(series) if os.path.exists(series) else math.nan,
+            "steady_ratio": steady_ratio(first),
             "unconfined_yield_kpa": c["unconfined_yield_kpa"],
             "major_consolidation_kpa": c["major_consolidation_kpa"],
             "ffc": c["ffc"],
@@ -92,7 +92,7 @@ def rows(run_dir):
             "locus_ratio_max": max(ratios),
             "particles": c["cell"]["particles"],
             "cell_width_d": c["cell"]["width_mm"] / c["cell"]["mean_cg_diameter_mm"],
-            "first_preshear": first_preshear(doc, series),
+            "first_preshear": first_preshear(doc, first),
             "wall_time_s": c["cell"]["wall_time_s"],
         }
 
