@@ -12,6 +12,9 @@ through the five points as the test itself does (scenario/yield_locus.hpp):
           wider windows average more of the cell's swings
   meanA   the mean sigma and tau over the shear from row A on (no peak at all: the mean
           mobilised strength of the whole shear)
+  w3pre   w3's tau times the test's mean pre-shear tau / sigma over that of the pre-shear before
+          the point (points.csv): the pre-shear normalisation of ring shear testing, which takes
+          the spread of the pre-shears as the sample's and removes it from the failure points
 Prints, per estimator, each DIR's C (kPa), phi (deg) and the fit's standard error of C, then the
 mean and the standard deviation over the DIRs (docs/validation/shear-cell.md 5.7).
 """
@@ -21,7 +24,7 @@ import os
 import statistics
 import sys
 
-ESTIMATORS = ["w3", "w5", "w9", "w15", "mean0", "mean10", "mean25"]
+ESTIMATORS = ["w3", "w5", "w9", "w15", "mean0", "mean10", "mean25", "w3pre"]
 
 
 def shears(run_dir, coal):
@@ -33,6 +36,22 @@ def shears(run_dir, coal):
                 by_point.setdefault(int(r["point"]), []).append(
                     (float(r["sigma_kpa"]), float(r["tau_kpa"])))
     return [by_point[p] for p in sorted(by_point)]
+
+
+def preshear_ratios(run_dir, coal):
+    """tau / sigma of each pre-shear before a shear to failure, in the order of the test."""
+    by_point = {}
+    with open(os.path.join(run_dir, "points.csv"), newline="") as f:
+        for r in csv.DictReader(f):
+            if r["coal"] == coal and r["kind"] == "preshear":
+                by_point[int(r["point"])] = float(r["tau_kpa"]) / float(r["sigma_kpa"])
+    return [by_point[p] for p in sorted(by_point)]
+
+
+def normalised(points, ratios):
+    """Each failure tau times the mean pre-shear ratio over the ratio of its own pre-shear."""
+    mean = statistics.fmean(ratios)
+    return [(s, t * mean / r) for (s, t), r in zip(points, ratios)]
 
 
 def failure(rows, est):
@@ -64,8 +83,13 @@ def main(argv):
         return 2
     coal, dirs = argv[1], argv[2:]
     tests = [shears(d, coal) for d in dirs]
+    ratios = [preshear_ratios(d, coal) for d in dirs]
     for est in ESTIMATORS:
-        fits = [fit([failure(rows, est) for rows in test]) for test in tests]
+        if est == "w3pre":
+            fits = [fit(normalised([failure(rows, "w3") for rows in test], r))
+                    for test, r in zip(tests, ratios)]
+        else:
+            fits = [fit([failure(rows, est) for rows in test]) for test in tests]
         cs = [f[0] for f in fits]
         phis = [f[1] for f in fits]
         sd = statistics.stdev(cs) if len(cs) > 1 else math.nan
