@@ -72,6 +72,7 @@ struct ShearTestOptions {
   std::string refit;                  // a finished test's DIR: its series evaluated again (no case)
   bool failure_strain_given = false;  // --failure-strain on the command line
   bool preshear_max_strain_given = false;  // without it: the larger of 2 and --preshear-strain
+  bool resume = false;                     // continue the test in out_dir from its checkpoint
   std::vector<std::string> overrides;
 };
 

@@ -168,6 +168,10 @@ int main(int argc, char** argv) {
   shear_cmd->add_option("case", shear.case_path, "case file (TOML); none with --refit")
       ->check(CLI::ExistingFile);
   shear_cmd->add_option("--out", shear.out_dir, "output directory (new or empty)")->required();
+  auto* resume_flag = shear_cmd->add_flag(
+      "--resume", shear.resume,
+      "continue the interrupted test in --out from its shear_checkpoint.bin (give the same case "
+      "and options)");
   shear_cmd->add_option("--preshear", shear.preshear_kpa,
                         "pre-shear normal stress, kPa (default 9)");
   shear_cmd->add_option("--normal", shear.normals,
@@ -229,6 +233,7 @@ int main(int argc, char** argv) {
         "--inertial-number", "--preshear-strain", "--preshear-max-strain", "--represhear-strain"})
     refit_opt->excludes(shear_cmd->get_option(name));
   refit_opt->excludes(set_opt);
+  refit_opt->excludes(resume_flag);
 
   auto* docs_cmd =
       cli.add_subcommand("config-docs", "print the case-file reference (docs/config.md)");

@@ -6,9 +6,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -18,6 +16,7 @@
 #include "app/observers.hpp"
 #include "app/progress.hpp"
 #include "app/run_common.hpp"
+#include "app/signals.hpp"
 #include "io/checkpoint.hpp"
 #include "io/config/load.hpp"
 #include "io/csv.hpp"
@@ -35,32 +34,6 @@ namespace {
 
 // The outlet bins up to the last checkpoint of a discharge still under way (docs/runs.md).
 constexpr const char* kOutletSoFar = "outlet_so_far.csv";
-
-// ---- signals ----------------------------------------------------------------------------------
-
-// Set by the handler, read by the time loop (which may run on another thread than the one the
-// signal interrupts): a lock-free atomic is both async-signal-safe and race-free.
-std::atomic<int> g_signal{0};
-static_assert(std::atomic<int>::is_always_lock_free);
-
-extern "C" void on_signal(int sig) {
-  g_signal.store(sig);
-  std::signal(sig, SIG_DFL);  // a second signal ends the program at once
-}
-
-void default_signals() {
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
-}
-
-struct SignalGuard {
-  SignalGuard() {
-    g_signal.store(0);
-    std::signal(SIGINT, on_signal);
-    std::signal(SIGTERM, on_signal);
-  }
-  ~SignalGuard() { default_signals(); }
-};
 
 struct InterruptedFill {};
 
@@ -187,7 +160,7 @@ class SiloRun {
     Random rng(c_.time.seed);
     double sim_at_ck = sim_->time(), wall_at_ck = wall();
     auto fill_checkpoint = [&](const FillProgress& fp) {
-      const bool stop = g_signal.load() != 0;
+      const bool stop = stop_signal() != 0;
       const double dt_sim = c_.time.checkpoint_interval, dt_wall = c_.time.checkpoint_wall_interval;
       if (stop || (dt_sim > 0 && sim_->time() - sim_at_ck >= dt_sim) ||
           (dt_wall > 0 && wall() - wall_at_ck >= dt_wall)) {
@@ -218,7 +191,7 @@ class SiloRun {
         p.wall_s = wall();
         note_progress(p, true);
       }
-      error_ = fmt::format("interrupted by signal {} during the fill", g_signal.load());
+      error_ = fmt::format("interrupted by signal {} during the fill", stop_signal());
       write_summary("interrupted during the fill");
       fmt::print(stderr,
                  "interrupted during the fill; checkpoint written; continue with: silodem run "
@@ -285,7 +258,7 @@ class SiloRun {
 
   int discharge() {
     DischargeControl control;
-    control.stop = [] { return g_signal.load() != 0; };
+    control.stop = [] { return stop_signal() != 0; };
     control.checkpoint = [this] { checkpoint(); };
     control.checkpoint_interval = c_.time.checkpoint_interval;
     control.checkpoint_wall_interval = c_.time.checkpoint_wall_interval;
@@ -353,7 +326,7 @@ class SiloRun {
       p.t_s = d.end_time, p.discharged_kg = d.discharged_mass;
       p.fraction = d.discharged_mass / std::max(d.filled_mass, 1e-30), p.wall_s = wall();
       note_progress(p, true);
-      error_ = fmt::format("interrupted by signal {} at t = {:.3f} s", g_signal.load(), d.end_time);
+      error_ = fmt::format("interrupted by signal {} at t = {:.3f} s", stop_signal(), d.end_time);
       write_summary("interrupted");
       fmt::print(stderr,
                  "interrupted at t = {:.3f} s of discharge; checkpoint written; continue with: "

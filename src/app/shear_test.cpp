@@ -6,18 +6,25 @@
 // Mohr circles); --json prints the JSON on stdout as well. `--refit FROM --out DIR [--failure
 // peak-tau]` evaluates a finished test's recorded series again with another failure criterion
 // (the same evaluation as a run's, so the same trajectory gives the same points), running nothing.
+// A test checkpoints to DIR/shear_checkpoint.bin every [simulation] checkpoint_wall_interval s of
+// wall time and on SIGINT/SIGTERM (exit 130); the same command with --resume continues it, with
+// the same series and result as a test never interrupted (with the same threads).
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "app/commands.hpp"
+#include "app/signals.hpp"
 #include "core/constants.hpp"
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/checkpoint.hpp"
 #include "io/config/load.hpp"
 #include "io/csv.hpp"
 #include "scenario/shear_cell.hpp"
@@ -175,10 +182,71 @@ int finish(const nlohmann::json& doc, const fs::path& out, bool json) {
   return rc;
 }
 
+constexpr const char* kCheckpoint = "shear_checkpoint.bin";
+
 void require_new_dir(const std::string& dir) {
   const fs::path out(dir);
+  if (fs::exists(out / kCheckpoint))
+    throw InputError({}, "--out",
+                     fmt::format("'{}' holds an interrupted test: add --resume to continue it, "
+                                 "or give another directory",
+                                 dir));
   if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
     throw InputError({}, "--out", fmt::format("'{}' exists and is not empty", dir));
+}
+
+// What a checkpoint must have been written by to be continued: the case file as it reads now,
+// the overrides, the coals and every option that changes the test (not --threads, which changes
+// only the summation order).
+std::uint64_t test_signature(const ShearTestOptions& o, const ShearTestSpec& spec,
+                             const std::vector<int>& coals) {
+  std::string t = read_text(o.case_path);
+  for (const auto& s : o.overrides) t += "\n--set " + s;
+  t += "\ncoals";
+  for (int c : coals) t += fmt::format(" {}", c);
+  t += fmt::format("\npreshear {:a} normals", spec.preshear);
+  for (double x : spec.normals) t += fmt::format(" {:a}", x);
+  t += fmt::format(
+      "\ncell {:a} {:a} I {:a} strains {:a} {:a} {:a} {:a} {:a} steady {:a} {:a} {:a} {:a} "
+      "failure {} seed {}",
+      spec.width, spec.height, spec.inertial_number, spec.preshear_strain, spec.preshear_max_strain,
+      spec.represhear_strain, spec.failure_strain, spec.sample_strain, spec.steady_step,
+      spec.steady_window, spec.steady_height_change, spec.steady_ratio_change,
+      failure_criterion_name(spec.failure), spec.seed);
+  return text_hash(t);
+}
+
+// A checkpoint's head: what it was written by and the coals it finished. Its reader is then at
+// the state of the coal under way, if `current`.
+struct TestCheckpoint {
+  std::uint64_t signature = 0;
+  int threads = 0;
+  std::vector<ShearTestResult> done;
+  std::vector<double> done_wall;  // s, each finished coal's
+  double current_wall = 0.0;      // s, spent on the coal under way before the checkpoint
+  bool current = false;
+};
+
+void put_head(ByteWriter& w, const TestCheckpoint& h) {
+  w.tag("SHTE");
+  w.put(h.signature), w.put(h.threads), w.put(std::uint64_t(h.done.size()));
+  for (std::size_t k = 0; k < h.done.size(); ++k)
+    save_shear_result(w, h.done[k]), w.put(h.done_wall[k]);
+  w.put(h.current_wall), w.put(std::uint8_t(h.current));
+}
+
+TestCheckpoint get_head(ByteReader& r) {
+  TestCheckpoint h;
+  r.tag("SHTE");
+  r.get(h.signature), r.get(h.threads);
+  const std::size_t n = r.get_count(8);
+  for (std::size_t k = 0; k < n; ++k) {
+    h.done.push_back(load_shear_result(r));
+    h.done_wall.push_back(r.get<double>());
+  }
+  r.get(h.current_wall);
+  h.current = r.get<std::uint8_t>() != 0;
+  return h;
 }
 
 // --refit: a finished test's series (series_<coal>.csv), pre-shear points (shear_test.json,
@@ -311,23 +379,106 @@ int shear_test_command(const ShearTestOptions& o) {
     throw InputError({}, "--coal",
                      fmt::format("'{}' is not a coal of the case ({})", o.coal, names));
   }
-  const fs::path out(o.out_dir);
-  require_new_dir(o.out_dir);
+  const fs::path out(o.out_dir), checkpoint = out / kCheckpoint;
+  TestCheckpoint state;
+  state.signature = test_signature(o, spec, coals);
+  state.threads = spec.threads;
+  std::optional<ByteReader> reader;
+  if (o.resume) {
+    if (!fs::exists(checkpoint))
+      throw InputError({}, "--resume",
+                       fs::exists(out / "shear_test.json")
+                           ? fmt::format("'{}' holds a finished test: nothing to resume", o.out_dir)
+                           : fmt::format("'{}' has no {} (a test killed before its first "
+                                         "checkpoint starts again without --resume, into an "
+                                         "empty directory)",
+                                         o.out_dir, kCheckpoint));
+    TestCheckpoint head;
+    try {
+      reader.emplace(read_checkpoint(checkpoint.string()));
+      head = get_head(*reader);
+    } catch (const std::runtime_error& e) {  // foreign, damaged, of another version
+      throw InputError({}, "--resume", e.what());
+    }
+    if (head.signature != state.signature)
+      throw InputError({}, "--resume",
+                       fmt::format("'{}' was written by a test of another case file, --set, coal "
+                                   "or test option: give the interrupted test's command again",
+                                   checkpoint.string()));
+    if (head.done.size() >= coals.size())
+      throw InputError(
+          {}, "--resume",
+          fmt::format("'{}' has every coal finished: nothing to resume", checkpoint.string()));
+    if (spec.threads != head.threads)
+      fmt::print(stderr,
+                 "warning: resuming with {} threads, the test had {}: the result will not be "
+                 "bitwise equal to an uninterrupted test's (summation order)\n",
+                 spec.threads, head.threads);
+    state.done = std::move(head.done);
+    state.done_wall = std::move(head.done_wall);
+    state.current_wall = head.current_wall;
+    if (!head.current) reader.reset();  // the next coal starts from its beginning
+  } else {
+    require_new_dir(o.out_dir);
+  }
   fs::create_directories(out / "figures");
 
-  std::vector<ShearTestResult> results;
-  nlohmann::json all = nlohmann::json::array();
-  for (int ci : coals) {
-    const auto t0 = std::chrono::steady_clock::now();
-    results.push_back(run_shear_test(c, report, model, ci, spec, [&](const std::string& m) {
-      if (!o.json) fmt::print(stderr, "{}\n", m);
-    }));
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    all.push_back(result_json(results.back(), c.coals[std::size_t(ci)], spec, wall));
-    write_series(out / fmt::format("series_{}.csv", safe_name(results.back().coal)),
-                 results.back());
+  const double interval = c.time.checkpoint_wall_interval;
+  using Clock = std::chrono::steady_clock;
+  auto last_write = Clock::now();
+  // The head, then the state of the coal under way (none between two coals).
+  auto write = [&](const std::function<void(ByteWriter&)>& current) {
+    ByteWriter w;
+    state.current = bool(current);
+    put_head(w, state);
+    if (current) current(w);
+    write_checkpoint(checkpoint.string(), w);
+    last_write = Clock::now();
+  };
+  {
+    SignalGuard signals;
+    for (std::size_t i = state.done.size(); i < coals.size(); ++i) {
+      const auto t0 = Clock::now();
+      const double before = state.current_wall;
+      auto elapsed = [&] {
+        return before + std::chrono::duration<double>(Clock::now() - t0).count();
+      };
+      ShearCheckpointing ck;
+      ck.stop = [] { return stop_signal() != 0; };
+      ck.due = [&] {
+        return interval > 0 &&
+               std::chrono::duration<double>(Clock::now() - last_write).count() >= interval;
+      };
+      ck.write = [&](const std::function<void(ByteWriter&)>& current) {
+        state.current_wall = elapsed();
+        write(current);
+      };
+      ck.resume = reader ? &*reader : nullptr;
+      const auto progress = [&](const std::string& m) {
+        if (!o.json) fmt::print(stderr, "{}\n", m);
+      };
+      try {
+        state.done.push_back(run_shear_test(c, report, model, coals[i], spec, progress, &ck));
+      } catch (const ShearInterrupted&) {
+        fmt::print(stderr,
+                   "interrupted by signal {}; checkpoint written; continue with the same command "
+                   "and --resume\n",
+                   stop_signal());
+        return kExitInterrupted;
+      }
+      reader.reset();
+      state.done_wall.push_back(elapsed());
+      state.current_wall = 0.0;
+      write_series(out / fmt::format("series_{}.csv", safe_name(state.done.back().coal)),
+                   state.done.back());
+      if (i + 1 < coals.size()) write({});  // the finished coal is kept if the next one is killed
+    }
   }
+  const std::vector<ShearTestResult>& results = state.done;
+  nlohmann::json all = nlohmann::json::array();
+  for (std::size_t i = 0; i < coals.size(); ++i)
+    all.push_back(
+        result_json(results[i], c.coals[std::size_t(coals[i])], spec, state.done_wall[i]));
   write_points(out / "points.csv", results);
   const nlohmann::json doc = {{"case", c.path},
                               {"k", c.cg.k},
@@ -343,7 +494,9 @@ int shear_test_command(const ShearTestOptions& o) {
                               {"preshear_min_strain", spec.preshear_strain},
                               {"preshear_max_strain", spec.preshear_max_strain},
                               {"coals", all}};
-  return finish(doc, out, o.json);
+  const int rc = finish(doc, out, o.json);
+  fs::remove(checkpoint);  // the test is complete: shear_test.json holds it
+  return rc;
 }
 
 }  // namespace silodem::app

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/bytes.hpp"
 #include "engine/simulation.hpp"
 #include "engine/walls/plane.hpp"
 
@@ -93,6 +94,27 @@ void Plate::advance(Simulation& sim) {
   moved_since_build_ += d;
   const double skin = sim.neighbors().skin;
   if (norm2(moved_since_build_) > 0.0625 * skin * skin) sim.request_rebuild();
+}
+
+void Plate::save(ByteWriter& w, const Simulation& sim) const {
+  const auto& plane = dynamic_cast<const PlaneWall&>(*sim.walls().at(wall_));
+  w.tag("PLAT");
+  w.put(plane.point()), w.put(plane.velocity());
+  w.put(ids_), w.put(control_), w.put(velocity_), w.put(displacement_), w.put(moved_since_build_);
+  w.put(integral_), w.put(builds_seen_);
+}
+
+void Plate::load(ByteReader& r, Simulation& sim) {
+  auto& plane = dynamic_cast<PlaneWall&>(sim.wall(wall_));
+  r.tag("PLAT");
+  plane.place(r.get<Vec3>());
+  plane.set_velocity(r.get<Vec3>());
+  r.get(ids_), r.get(control_), r.get(velocity_), r.get(displacement_), r.get(moved_since_build_);
+  r.get(integral_), r.get(builds_seen_);
+  index_.clear();  // found again from the ids
+  find_glued(sim);
+  if (index_.size() != ids_.size())
+    throw std::runtime_error("checkpoint: a plate's glued particles are not in the simulation");
 }
 
 void Plate::add_to(Simulation& sim) {

@@ -26,6 +26,8 @@
 
 namespace silodem {
 
+class ByteReader;
+class ByteWriter;
 class Simulation;
 
 struct PlateControl {
@@ -64,6 +66,12 @@ class Plate {
   const Vec3& normal() const { return normal_; }
   std::size_t wall() const { return wall_; }
   const std::vector<std::uint64_t>& glued_ids() const { return ids_; }
+
+  // Checkpoint of the plate and of its wall's position and velocity (the simulation's own
+  // checkpoint has neither); load() after the simulation's load(), into a plate made on the same
+  // wall.
+  void save(ByteWriter& w, const Simulation& sim) const;
+  void load(ByteReader& r, Simulation& sim);
 
  private:
   void find_glued(const Simulation& sim) const;  // indices of ids_ after a reorder

@@ -103,23 +103,35 @@ void Simulation::run_until(double t_end) {
 }
 
 void Simulation::save(ByteWriter& w) const {
-  w.tag("SIMU");
+  // SIM2 adds the walls' forces of the last force pass, which a driven plate reads at the next
+  // step (engine/plate.hpp); SIMU, without them, is still read.
+  w.tag("SIM2");
   w.put(time_), w.put(steps_), w.put(std::uint8_t(initialized_)),
       w.put(std::uint8_t(rebuild_pending_));
   w.put(std::uint64_t(walls_.size()));
   for (const auto& wl : walls_) w.put(std::uint8_t(wl->enabled));
+  w.put(wall_force_);
   p_.save(w);
   list_.save(w);
 }
 
 void Simulation::load(ByteReader& r) {
-  r.tag("SIMU");
+  const bool with_wall_forces = r.next_is("SIM2");
+  if (with_wall_forces)
+    r.tag("SIM2");
+  else
+    r.tag("SIMU");
   r.get(time_), r.get(steps_);
   initialized_ = r.get<std::uint8_t>() != 0;
   rebuild_pending_ = r.get<std::uint8_t>() != 0;
   if (r.get<std::uint64_t>() != walls_.size())
     throw std::runtime_error("checkpoint: the case has a different number of walls");
   for (auto& wl : walls_) wl->enabled = r.get<std::uint8_t>() != 0;
+  if (with_wall_forces) {
+    r.get(wall_force_);
+    if (!wall_force_.empty() && wall_force_.size() != walls_.size())
+      throw std::runtime_error("checkpoint: wall forces of a different number of walls");
+  }
   p_.load(r);
   list_.load(r);
 }

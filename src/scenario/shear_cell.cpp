@@ -105,7 +105,8 @@ bool shear_is_steady(const std::vector<ShearSample>& rows, std::size_t per_windo
 
 ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
                                const ContactModel& model, int coal, const ShearTestSpec& spec,
-                               const ShearProgress& progress) {
+                               const ShearProgress& progress,
+                               const ShearCheckpointing* checkpointing) {
   check_shear_spec(spec);
   const CoalProperties& coal_p = c.coals[std::size_t(coal)];
   const CoalReport& cr = report.coals[std::size_t(coal)];
@@ -191,62 +192,91 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
     res.series.push_back({phase, point, S.time(), strain, st.sigma, st.tau, cell.lid_z()});
   };
 
+  // Where the test is: its stage (kStages below, then four per normal stress) and the state of
+  // the stage under way, so that a checkpoint can be taken after any row or chunk.
+  struct Cursor {
+    int stage = 0;
+    bool begun = false;     // the stage has set its control and started its state below
+    double t0 = 0.0;        // hold: when it began
+    int good = 0;           // hold: chunks in a row within 2% of the load
+    double x0 = 0.0;        // shear: the lid's displacement when it began
+    double target = 0.0;    // shear: the strain to reach before the next steadiness check
+    std::size_t first = 0;  // shear: its first row in res.series
+    std::size_t least = 0;  // shear: its rows when it reached its least strain (0: not yet)
+    StressPoint pre_sum;    // the pre-shear points so far
+    int n_pre = 0;
+  } cur;
+  enum : int { kCompress, kConsolidate, kGlue, kFirstPreshear, kBulk, kStages };
+  const int end_stage = kStages + 4 * int(spec.normals.size());
+
+  // After the plates are glued: the sheared height sets the shear speed and the rows.
+  double h_shear = 0.0, v_shear = 0.0, v_cap = 0.0;
+  long per_row = 1;
+  auto set_shear = [&] {
+    h_shear = res.sheared_height;
+    v_shear = res.shear_velocity;
+    per_row = std::max(1L, long(std::llround(spec.sample_strain * h_shear / v_shear / s.dt)));
+    v_cap = 0.5 * v_shear;  // the lid's normal speed, at most half the shear speed
+  };
+
+  auto save_state = [&](ByteWriter& w) {
+    w.tag("SHRT");
+    w.put(cur.stage), w.put(std::uint8_t(cur.begun)), w.put(cur.t0), w.put(cur.good);
+    w.put(cur.x0), w.put(cur.target), w.put(std::uint64_t(cur.first));
+    w.put(std::uint64_t(cur.least)), w.put(cur.pre_sum), w.put(cur.n_pre);
+    save_shear_result(w, res);
+    S.save(w);
+    cell.floor().save(w, S);
+    cell.lid().save(w, S);
+  };
+  if (checkpointing && checkpointing->resume) {
+    ByteReader& r = *checkpointing->resume;
+    r.tag("SHRT");
+    r.get(cur.stage), cur.begun = r.get<std::uint8_t>() != 0, r.get(cur.t0), r.get(cur.good);
+    r.get(cur.x0), r.get(cur.target), cur.first = std::size_t(r.get<std::uint64_t>());
+    cur.least = std::size_t(r.get<std::uint64_t>()), r.get(cur.pre_sum), r.get(cur.n_pre);
+    res = load_shear_result(r);
+    S.load(r);
+    cell.floor().load(r, S);
+    cell.lid().load(r, S);
+    if (!(cur.stage >= 0 && cur.stage <= end_stage) || cur.first > res.series.size() ||
+        res.coal != coal_p.name)
+      throw std::runtime_error("checkpoint: the shear test's state does not fit this test");
+    if (cur.stage > kGlue) set_shear();
+    log(fmt::format("resumed at t = {:.3f} s, {} steps", S.time(), S.step_count()));
+  }
+  // A checkpoint now if asked for; after a stop, none of the test's work is lost.
+  auto tick = [&] {
+    if (!checkpointing) return;
+    const bool stop = checkpointing->stop && checkpointing->stop();
+    if (stop || (checkpointing->due && checkpointing->due())) {
+      if (checkpointing->write) checkpointing->write(save_state);
+      if (stop) throw ShearInterrupted{};
+    }
+  };
+
   // Hold `sigma` without shearing until the mean load over three chunks in a row is within 2% of
   // it (at most 5000 t_col). The sample still creeps then, slowly; the shear that follows sets
   // its state.
   auto hold = [&](const std::string& phase, int point, double sigma) {
-    servo(sigma, 0.0, 0.0);
-    int good = 0;
-    const double t0 = S.time();
-    while (good < 3 && S.time() - t0 < 5000 * t_col) {
+    if (!cur.begun) {
+      servo(sigma, 0.0, 0.0);
+      cur.good = 0;
+      cur.t0 = S.time();
+      cur.begun = true;
+    }
+    while (cur.good < 3 && S.time() - cur.t0 < 5000 * t_col) {
       const StressPoint st = cell.run(chunk);
       record(phase, point, 0.0, st);
-      good = std::abs(st.sigma / sigma - 1.0) < 0.02 ? good + 1 : 0;
+      cur.good = std::abs(st.sigma / sigma - 1.0) < 0.02 ? cur.good + 1 : 0;
+      tick();
     }
-    if (good < 3)
+    if (cur.good < 3)
       res.warnings.push_back(
           fmt::format("{} at {:g} kPa: the load did not settle within 5000 "
                       "collision times",
                       phase, sigma / 1e3));
   };
-
-  // 1. Press the loose sample to the pre-shear stress: the lid comes down at a set speed until
-  // it carries half the load, then the servo takes over.
-  const double v_press = std::min(0.1, 0.05 * h_total / (200 * t_col));
-  cell.lid().set_control({{0, 0, -v_press}});
-  log(fmt::format("{} particles in a {:.1f} mm cell; pressing to {:g} kPa", res.particles, L * 1e3,
-                  spec.preshear / 1e3));
-  for (;;) {
-    const StressPoint st = cell.run(chunk);
-    record("compress", 0, 0.0, st);
-    if (st.sigma > spec.preshear / 2) break;
-    if (cell.lid_z() < 0.5 * h_total)
-      throw SimulationError(
-          "shear cell: the lid came down to half the sample height without "
-          "meeting the pre-shear load");
-  }
-  hold("consolidate", 0, spec.preshear);
-
-  // 2. Rough plates of the coal itself.
-  {
-    std::vector<std::size_t> bottom, top;
-    const double zl = cell.lid_z();
-    for (std::size_t i = 0; i < p.size(); ++i) {
-      if (S.particles().x[i].z < d_mean) bottom.push_back(i);
-      if (S.particles().x[i].z > zl - d_mean) top.push_back(i);
-    }
-    cell.floor().glue(S, bottom);
-    cell.lid().glue(S, top);
-    res.glued = int(bottom.size() + top.size());
-  }
-  const double h_shear = cell.lid_z() - 2.0 * d_mean;
-  res.sheared_height = h_shear;
-  const double v_shear =
-      spec.inertial_number * h_shear * std::sqrt(sigma_min / coal_p.true_density) / d_mean;
-  res.shear_velocity = v_shear;
-  const long per_row =
-      std::max(1L, long(std::llround(spec.sample_strain * h_shear / v_shear / s.dt)));
-  const double v_cap = 0.5 * v_shear;  // the lid's normal speed, at most half the shear speed
 
   // A shear's rows, and how many of them it took to reach its least strain.
   struct Shear {
@@ -258,19 +288,28 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
   using Settled = std::function<bool(const std::vector<ShearSample>&)>;
   auto shear = [&](const std::string& phase, int point, double sigma, double strain,
                    double max_strain, const Settled& settled) {
-    servo(sigma, v_shear, v_cap);
-    const double x0 = cell.lid().displacement().x;
-    Shear out;
-    for (double target = strain;;) {
-      while (cell.lid().displacement().x - x0 < target * h_shear) {
-        const StressPoint st = cell.run(per_row);
-        record(phase, point, (cell.lid().displacement().x - x0) / h_shear, st);
-        out.rows.push_back(res.series.back());
-      }
-      if (out.least == 0) out.least = out.rows.size();
-      if (!settled || target >= max_strain || settled(out.rows)) break;
-      target = std::min(max_strain, target + spec.steady_step);
+    if (!cur.begun) {
+      servo(sigma, v_shear, v_cap);
+      cur.x0 = cell.lid().displacement().x;
+      cur.target = strain;
+      cur.first = res.series.size();
+      cur.least = 0;
+      cur.begun = true;
     }
+    auto rows = [&] {
+      return std::vector<ShearSample>(res.series.begin() + long(cur.first), res.series.end());
+    };
+    for (;;) {
+      while (cell.lid().displacement().x - cur.x0 < cur.target * h_shear) {
+        const StressPoint st = cell.run(per_row);
+        record(phase, point, (cell.lid().displacement().x - cur.x0) / h_shear, st);
+        tick();
+      }
+      if (cur.least == 0) cur.least = res.series.size() - cur.first;
+      if (!settled || cur.target >= max_strain || settled(rows())) break;
+      cur.target = std::min(max_strain, cur.target + spec.steady_step);
+    }
+    Shear out{rows(), cur.least};
     log(fmt::format("{} {} at {:g} kPa: strain {:.2f} done, t = {:.3f} s, {} steps", phase, point,
                     sigma / 1e3, out.rows.empty() ? 0.0 : out.rows.back().strain, S.time(),
                     S.step_count()));
@@ -288,54 +327,171 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
     return StressPoint{m.sigma / k, m.tau / k};
   };
 
-  // 3. The first pre-shear, until steady; then the bulk density between the glued layers.
-  const Shear first = shear("preshear", 0, spec.preshear, spec.preshear_strain,
-                            spec.preshear_max_strain, [&](const std::vector<ShearSample>& rows) {
-                              return shear_is_steady(rows, per_window, spec);
-                            });
-  const StressPoint pre0 = preshear_end(first);
-  res.preshear_steady = shear_is_steady(first.rows, per_window, spec);
-  res.preshear_strain = first.rows.empty() ? 0.0 : first.rows.back().strain;
-  if (!res.preshear_steady)
-    res.warnings.push_back(fmt::format(
-        "the first pre-shear was not steady by a strain of {:.2f} (--preshear-max-strain): the "
-        "sample height or tau / sigma still changed by more than {:g}% or {:g}% over {:g} of "
-        "strain",
-        res.preshear_strain, 100 * spec.steady_height_change, 100 * spec.steady_ratio_change,
-        spec.steady_window));
-  {
-    const double a = d_mean, b = cell.lid_z() - d_mean;
-    double v = 0;
-    const auto& q = S.particles();
-    for (std::size_t i = 0; i < q.size(); ++i) v += sphere_slab(q.x[i].z, q.radius[i], a, b);
-    res.solid_fraction = v / (L * L * (b - a));
-    res.bulk_density = res.solid_fraction * coal_p.true_density;
+  for (; cur.stage < end_stage; ++cur.stage, cur.begun = false, tick()) {
+    switch (cur.stage) {
+      case kCompress: {
+        // 1. Press the loose sample to the pre-shear stress: the lid comes down at a set speed
+        // until it carries half the load, then the servo takes over (kConsolidate).
+        if (!cur.begun) {
+          const double v_press = std::min(0.1, 0.05 * h_total / (200 * t_col));
+          cell.lid().set_control({{0, 0, -v_press}});
+          log(fmt::format("{} particles in a {:.1f} mm cell; pressing to {:g} kPa", res.particles,
+                          L * 1e3, spec.preshear / 1e3));
+          cur.begun = true;
+        }
+        for (;;) {
+          const StressPoint st = cell.run(chunk);
+          record("compress", 0, 0.0, st);
+          if (st.sigma > spec.preshear / 2) break;
+          if (cell.lid_z() < 0.5 * h_total)
+            throw SimulationError(
+                "shear cell: the lid came down to half the sample height without "
+                "meeting the pre-shear load");
+          tick();
+        }
+        break;
+      }
+      case kConsolidate:
+        hold("consolidate", 0, spec.preshear);
+        break;
+      case kGlue: {
+        // 2. Rough plates of the coal itself.
+        std::vector<std::size_t> bottom, top;
+        const double zl = cell.lid_z();
+        for (std::size_t i = 0; i < p.size(); ++i) {
+          if (S.particles().x[i].z < d_mean) bottom.push_back(i);
+          if (S.particles().x[i].z > zl - d_mean) top.push_back(i);
+        }
+        cell.floor().glue(S, bottom);
+        cell.lid().glue(S, top);
+        res.glued = int(bottom.size() + top.size());
+        res.sheared_height = cell.lid_z() - 2.0 * d_mean;
+        res.shear_velocity = spec.inertial_number * res.sheared_height *
+                             std::sqrt(sigma_min / coal_p.true_density) / d_mean;
+        set_shear();
+        break;
+      }
+      case kFirstPreshear: {
+        // 3. The first pre-shear, until steady.
+        const Shear first =
+            shear("preshear", 0, spec.preshear, spec.preshear_strain, spec.preshear_max_strain,
+                  [&](const std::vector<ShearSample>& rows) {
+                    return shear_is_steady(rows, per_window, spec);
+                  });
+        cur.pre_sum = preshear_end(first);
+        cur.n_pre = 1;
+        res.preshear_steady = shear_is_steady(first.rows, per_window, spec);
+        res.preshear_strain = first.rows.empty() ? 0.0 : first.rows.back().strain;
+        if (!res.preshear_steady)
+          res.warnings.push_back(fmt::format(
+              "the first pre-shear was not steady by a strain of {:.2f} (--preshear-max-strain): "
+              "the sample height or tau / sigma still changed by more than {:g}% or {:g}% over "
+              "{:g} of strain",
+              res.preshear_strain, 100 * spec.steady_height_change, 100 * spec.steady_ratio_change,
+              spec.steady_window));
+        break;
+      }
+      case kBulk: {
+        // The bulk density between the glued layers after the first pre-shear.
+        const double a = d_mean, b = cell.lid_z() - d_mean;
+        double v = 0;
+        const auto& q = S.particles();
+        for (std::size_t i = 0; i < q.size(); ++i) v += sphere_slab(q.x[i].z, q.radius[i], a, b);
+        res.solid_fraction = v / (L * L * (b - a));
+        res.bulk_density = res.solid_fraction * coal_p.true_density;
+        break;
+      }
+      default: {
+        // 4. For each lower stress: hold the pre-shear stress, pre-shear again, stop, hold the
+        // lower stress, shear to failure.
+        const std::size_t k = std::size_t(cur.stage - kStages) / 4;
+        const int point = int(k) + 1;
+        const double sigma = spec.normals[k];
+        switch ((cur.stage - kStages) % 4) {
+          case 0:  // back to the pre-shear stress first (the servo's speed is capped in a shear)
+            hold("consolidate", point, spec.preshear);
+            break;
+          case 1: {
+            const Shear pre =
+                shear("preshear", point, spec.preshear, spec.represhear_strain, 0.0, nullptr);
+            ShearPoint sp;
+            sp.sigma_target = sigma;
+            sp.preshear = preshear_end(pre);
+            // Steady over its two halves (a later pre-shear is shorter than two windows).
+            sp.preshear_steady =
+                shear_is_steady(pre.rows, std::min(per_window, pre.rows.size() / 2), spec);
+            cur.pre_sum.sigma += sp.preshear.sigma, cur.pre_sum.tau += sp.preshear.tau;
+            ++cur.n_pre;
+            res.points.push_back(sp);
+            break;
+          }
+          case 2:
+            hold("relax", point, sigma);
+            break;
+          default:
+            shear("shear", point, sigma, spec.failure_strain, 0.0, nullptr);
+        }
+      }
+    }
   }
-  StressPoint pre_sum = pre0;
-  int n_pre = 1;
-
-  // 4. For each lower stress: hold the pre-shear stress, pre-shear again, stop, hold the lower
-  // stress, shear to failure.
-  for (std::size_t k = 0; k < spec.normals.size(); ++k) {
-    const int point = int(k) + 1;
-    const double sigma = spec.normals[k];
-    // Back to the pre-shear stress first (the servo's speed is capped while it shears).
-    hold("consolidate", point, spec.preshear);
-    const Shear pre = shear("preshear", point, spec.preshear, spec.represhear_strain, 0.0, nullptr);
-    ShearPoint sp;
-    sp.sigma_target = sigma;
-    sp.preshear = preshear_end(pre);
-    // Steady over its two halves (a later pre-shear is shorter than two windows).
-    sp.preshear_steady = shear_is_steady(pre.rows, std::min(per_window, pre.rows.size() / 2), spec);
-    pre_sum.sigma += sp.preshear.sigma, pre_sum.tau += sp.preshear.tau, ++n_pre;
-    hold("relax", point, sigma);
-    shear("shear", point, sigma, spec.failure_strain, 0.0, nullptr);
-    res.points.push_back(sp);
-  }
-  res.preshear = {pre_sum.sigma / n_pre, pre_sum.tau / n_pre};
+  res.preshear = {cur.pre_sum.sigma / cur.n_pre, cur.pre_sum.tau / cur.n_pre};
   evaluate_failure(res, spec);
   res.steps = S.step_count();
   return res;
+}
+
+void save_shear_result(ByteWriter& w, const ShearTestResult& r) {
+  w.tag("SHRS");
+  w.put(r.coal), w.put(r.particles), w.put(r.glued), w.put(r.width), w.put(r.sheared_height);
+  w.put(r.mean_diameter), w.put(r.shear_velocity), w.put(r.dt), w.put(r.bulk_density);
+  w.put(r.solid_fraction), w.put(r.preshear), w.put(std::uint8_t(r.preshear_steady));
+  w.put(r.preshear_strain);
+  w.put(std::uint64_t(r.points.size()));
+  for (const ShearPoint& p : r.points) {
+    w.put(p.sigma_target), w.put(p.sigma), w.put(p.tau), w.put(p.strain_at_peak);
+    w.put(p.preshear), w.put(std::uint8_t(p.preshear_steady));
+  }
+  const YieldLocus& y = r.locus;
+  w.put(y.cohesion), w.put(y.friction_angle), w.put(y.rms_residual), w.put(y.cohesion_stderr);
+  w.put(y.friction_angle_stderr), w.put(y.unconfined), w.put(y.consolidation);
+  w.put(y.unconfined_yield), w.put(y.major_consolidation), w.put(y.flow_function);
+  w.put(std::uint8_t(y.consolidation_tangent));
+  w.put(std::uint64_t(r.series.size()));
+  for (const ShearSample& s : r.series) {
+    w.put(s.phase), w.put(s.point), w.put(s.time), w.put(s.strain), w.put(s.sigma), w.put(s.tau);
+    w.put(s.height);
+  }
+  w.put(r.steps);
+  w.put(std::uint64_t(r.warnings.size()));
+  for (const auto& m : r.warnings) w.put(m);
+}
+
+ShearTestResult load_shear_result(ByteReader& r) {
+  ShearTestResult o;
+  r.tag("SHRS");
+  r.get(o.coal), r.get(o.particles), r.get(o.glued), r.get(o.width), r.get(o.sheared_height);
+  r.get(o.mean_diameter), r.get(o.shear_velocity), r.get(o.dt), r.get(o.bulk_density);
+  r.get(o.solid_fraction), r.get(o.preshear), o.preshear_steady = r.get<std::uint8_t>() != 0;
+  r.get(o.preshear_strain);
+  o.points.resize(r.get_count(sizeof(double)));
+  for (ShearPoint& p : o.points) {
+    r.get(p.sigma_target), r.get(p.sigma), r.get(p.tau), r.get(p.strain_at_peak);
+    r.get(p.preshear), p.preshear_steady = r.get<std::uint8_t>() != 0;
+  }
+  YieldLocus& y = o.locus;
+  r.get(y.cohesion), r.get(y.friction_angle), r.get(y.rms_residual), r.get(y.cohesion_stderr);
+  r.get(y.friction_angle_stderr), r.get(y.unconfined), r.get(y.consolidation);
+  r.get(y.unconfined_yield), r.get(y.major_consolidation), r.get(y.flow_function);
+  y.consolidation_tangent = r.get<std::uint8_t>() != 0;
+  o.series.resize(r.get_count(sizeof(double)));
+  for (ShearSample& s : o.series) {
+    r.get(s.phase), r.get(s.point), r.get(s.time), r.get(s.strain), r.get(s.sigma), r.get(s.tau);
+    r.get(s.height);
+  }
+  r.get(o.steps);
+  o.warnings.resize(r.get_count(sizeof(std::uint64_t)));
+  for (auto& m : o.warnings) r.get(m);
+  return o;
 }
 
 void evaluate_failure(ShearTestResult& r, const ShearTestSpec& spec) {

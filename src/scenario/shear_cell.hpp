@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "core/bytes.hpp"
 #include "scenario/setup.hpp"
 #include "scenario/yield_locus.hpp"
 
@@ -118,10 +119,29 @@ bool shear_is_steady(const std::vector<ShearSample>& rows, std::size_t per_windo
 void evaluate_failure(ShearTestResult& r, const ShearTestSpec& spec);
 inline constexpr const char* kNoPeakWarning = "no peak before the end of the shear";
 
+// Checkpoints of a test under way. After each row or chunk of steps (and between stages) the
+// test asks `stop`, then `due`; if either says so it hands `write` a function that puts the
+// test's whole state into a writer (the caller adds its own head and writes the file), and after
+// a stop it throws ShearInterrupted. With `resume` (a reader positioned where such a function
+// began writing) the test continues from that state: the same case, spec and coal give the
+// same series, points and locus as a test never interrupted (with the same threads).
+struct ShearCheckpointing {
+  std::function<bool()> stop;  // e.g. a signal
+  std::function<bool()> due;   // e.g. the wall time since the last checkpoint
+  std::function<void(const std::function<void(ByteWriter&)>& state)> write;
+  ByteReader* resume = nullptr;
+};
+struct ShearInterrupted {};
+
+// A result, finished or not, in a checkpoint (a test of several coals keeps its finished ones).
+void save_shear_result(ByteWriter& w, const ShearTestResult& r);
+ShearTestResult load_shear_result(ByteReader& r);
+
 // Runs the test on coal `coal` of the case (report and model from derive_case); checks the spec
-// first.
+// first. `checkpointing` may be null (no checkpoints).
 ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
                                const ContactModel& model, int coal, const ShearTestSpec& spec,
-                               const ShearProgress& progress);
+                               const ShearProgress& progress,
+                               const ShearCheckpointing* checkpointing = nullptr);
 
 }  // namespace silodem

@@ -48,9 +48,10 @@ for seed in $(seq 1 "$seeds"); do
         { echo "$dir was run at k = $done_k, not $k: give another OUT" >&2; exit 2; }
       continue
     fi
-    rm -rf "$dir"
-    echo "$(date -u +%FT%TZ) $name seed $seed"
+    resume=()  # a killed or stopped test goes on from its checkpoint
+    if [[ -f $dir/shear_checkpoint.bin ]]; then resume=(--resume); else rm -rf "$dir" "$dir.log"; fi
+    echo "$(date -u +%FT%TZ) $name seed $seed ${resume[*]}"
     "$silodem" shear-test "$here/studies/shear/luding-epsd.toml" --coal Indonesian --seed "$seed" \
-      --threads 1 --out "$dir" "${set_args[@]}" --set "${variant[$name]}" >"$dir.log" 2>&1
+      --threads 1 --out "$dir" "${set_args[@]}" --set "${variant[$name]}" "${resume[@]}" >>"$dir.log" 2>&1
   done
 done

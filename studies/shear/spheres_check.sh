@@ -61,10 +61,11 @@ run_one() {
   local name=${1%%:*} seed=${1##*:}
   local dir=$out/${name}_seed=$seed
   [ -f "$dir/shear_test.json" ] && return 0
-  rm -rf "$dir"
+  local resume=()  # a killed or stopped test goes on from its checkpoint
+  if [ -f "$dir/shear_checkpoint.bin" ]; then resume=(--resume); else rm -rf "$dir" "$out/${name}_seed=$seed.log"; fi
   # shellcheck disable=SC2086
-  "$silodem" shear-test "$case_file" --out "$dir" --threads 1 --seed "$seed" --inertial-number 5e-3 ${extra[$name]} ${shear_args[@]+"${shear_args[@]}"} \
-    > "$out/${name}_seed=$seed.log" 2>&1 || { echo "failed: $name seed $seed (see $out/${name}_seed=$seed.log)"; return 1; }
+  "$silodem" shear-test "$case_file" --out "$dir" --threads 1 --seed "$seed" --inertial-number 5e-3 ${extra[$name]} ${shear_args[@]+"${shear_args[@]}"} ${resume[@]+"${resume[@]}"} \
+    >> "$out/${name}_seed=$seed.log" 2>&1 || { echo "failed: $name seed $seed (see $out/${name}_seed=$seed.log)"; return 1; }
   echo "done: $name seed $seed"
 }
 

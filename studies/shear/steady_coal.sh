@@ -4,7 +4,9 @@
 # in the default 14 x 11 cell, with the first pre-shear run until steady (the default since
 # 2026-12-07; the flags are written out so that an older binary refuses the run), both coals,
 # k = 3 and 4, seeds 1..SEEDS. Runs go to OUT/k=<k>/kc=2.5e4_<coal>_seed=<n>/, the layout of
-# validation/shear/steady/ (copy its runs into OUT to go on from them). Resumable: a run whose shear_test.json exists is skipped. JOBS runs
+# validation/shear/steady/ (copy its runs into OUT to go on from them). Resumable: a run whose
+# shear_test.json exists is skipped, one with a shear_checkpoint.bin (killed or stopped) goes on
+# from it (--resume; its log is appended to). JOBS runs
 # side by side (environment, default 1), one thread each. Then the means per coal and k, and
 # each coal's k = 4 failure stresses over its k = 3 ones:
 #   /usr/bin/python3 studies/shear/shear_summary.py OUT/k=4/* OUT/k=3/*
@@ -36,10 +38,11 @@ run_one() {
   local dir=$out/k=$k/kc=2.5e4_${coal}_seed=$seed
   [[ -f $dir/shear_test.json ]] && return 0
   mkdir -p "$out/k=$k"
-  rm -rf "$dir"
-  echo "$(date -u +%FT%TZ) start $coal k = $k seed $seed"
+  local resume=()
+  if [[ -f $dir/shear_checkpoint.bin ]]; then resume=(--resume); else rm -rf "$dir" "$dir.log"; fi
+  echo "$(date -u +%FT%TZ) start $coal k = $k seed $seed ${resume[*]}"
   "$silodem" shear-test "$here/studies/shear/luding-epsd.toml" --coal "$coal" --seed "$seed" \
-    --threads 1 --out "$dir" "${common[@]}" --set "coarse_graining.k=$k" >"$dir.log" 2>&1 ||
+    --threads 1 --out "$dir" "${common[@]}" --set "coarse_graining.k=$k" "${resume[@]}" >>"$dir.log" 2>&1 ||
     { echo "failed: $coal k = $k seed $seed (see $dir.log)"; return 1; }
   [[ -f $dir/shear_test.json ]] || { echo "failed: $coal k = $k seed $seed wrote no shear_test.json"; return 1; }
   echo "$(date -u +%FT%TZ) done $coal k = $k seed $seed"

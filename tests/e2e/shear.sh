@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # End-to-end (issue 17, item 2): `silodem shear-test` on a small cell of frictionless spheres
 # writes shear_test.json (the fields the issue names), points.csv, the series and the yield-locus
-# figure, and --json prints the same JSON; bad input is refused with exit 2 and one line.
+# figure, and --json prints the same JSON; bad input is refused with exit 2 and one line; a test
+# stopped by SIGTERM keeps a checkpoint and --resume finishes it as if never stopped.
 set -u
 bin=$1
 src=$2
@@ -12,7 +13,7 @@ bad() { printf 'FAIL: %s\n' "$*"; fail=1; }
 case_file="$src/tests/data/frictionless_spheres.toml"
 quick=(--preshear 2 --normal 1.5,1 --width 5 --height 4 --inertial-number 0.01
        --preshear-strain 0.1 --preshear-max-strain 0.2 --represhear-strain 0.05
-       --failure-strain 0.05 --threads 2)
+       --failure-strain 0.05 --threads 1)
 
 "$bin" shear-test "$case_file" --out "$work/st" "${quick[@]}" --json > "$work/out.json" 2> "$work/err.txt"
 rc=$?
@@ -143,4 +144,45 @@ expect_input_error "first pre-shear's largest strain below its least" "--preshea
   --out "$work/b4" --preshear-strain 0.5 --preshear-max-strain 0.4
 expect_refit_error "refit with --preshear-max-strain" "excludes" --refit "$work/st" --out "$work/rb6" \
   --preshear-max-strain 1
+
+# Stopped by SIGTERM in its first pre-shear, a test writes shear_checkpoint.bin and exits 130
+# without shear_test.json; --resume with the same command finishes it with the series and the
+# result of the test never stopped (st above: the same options, one thread).
+"$bin" shear-test "$case_file" --out "$work/int" "${quick[@]}" 2> "$work/int.err" &
+pid=$!
+for _ in $(seq 1 600); do
+  grep -q "pressing" "$work/int.err" 2>/dev/null && break
+  sleep 0.1
+done
+sleep 2
+kill -TERM "$pid"
+wait "$pid"
+rc=$?
+[ "$rc" = 130 ] || bad "SIGTERM: exit $rc, want 130 ($(tail -2 "$work/int.err"))"
+[ -s "$work/int/shear_checkpoint.bin" ] || bad "SIGTERM: no shear_checkpoint.bin"
+[ -e "$work/int/shear_test.json" ] && bad "SIGTERM: an unfinished test wrote shear_test.json"
+grep -q -- "--resume" "$work/int.err" || bad "SIGTERM: the message does not say --resume"
+expect_input_error "an interrupted test's directory without --resume" "add --resume" \
+  --out "$work/int" "${quick[@]}"
+expect_input_error "resume with another seed" "another case file" --out "$work/int" "${quick[@]}" \
+  --seed 2 --resume
+expect_input_error "resume with nothing to resume" "no shear_checkpoint.bin" --out "$work/b5" \
+  "${quick[@]}" --resume
+"$bin" shear-test "$case_file" --out "$work/int" "${quick[@]}" --resume > /dev/null 2> "$work/res.err"
+rc=$?
+[ "$rc" = 0 ] || bad "--resume: exit $rc ($(tail -2 "$work/res.err"))"
+grep -q "resumed at" "$work/res.err" || bad "--resume: no 'resumed at' line"
+[ -e "$work/int/shear_checkpoint.bin" ] && bad "--resume: the finished test kept its checkpoint"
+cmp -s "$work/st/series_glass.csv" "$work/int/series_glass.csv" ||
+  bad "--resume: the series differs from the test never stopped"
+/usr/bin/python3 - "$work" <<'PY' || fail=1
+import json, sys
+w = sys.argv[1]
+(a,) = json.load(open(f"{w}/st/shear_test.json"))["coals"]
+(b,) = json.load(open(f"{w}/int/shear_test.json"))["coals"]
+for k in ("cohesion_kpa", "friction_angle_deg", "yield_locus", "bulk_density_kg_m3", "preshear_points"):
+    assert a[k] == b[k], (k, a[k], b[k])
+assert a["cell"]["steps"] == b["cell"]["steps"], (a["cell"]["steps"], b["cell"]["steps"])
+PY
+expect_input_error "resume a finished test" "finished test" --out "$work/int" "${quick[@]}" --resume
 exit $fail

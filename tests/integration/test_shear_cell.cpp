@@ -9,6 +9,10 @@
 // within 5%.
 #include <gtest/gtest.h>
 
+#include <functional>
+#include <optional>
+#include <vector>
+
 #include "io/config/load.hpp"
 #include "scenario/shear_cell.hpp"
 
@@ -49,6 +53,166 @@ TEST(ShearCell, FrictionlessSpheresHaveThePeyneauRouxFrictionAndNoCohesion) {
   for (const auto& p : r.points) EXPECT_TRUE(p.preshear_steady);  // over the two halves
   EXPECT_GT(r.solid_fraction, 0.55);  // a dense random packing (0.64 for monodisperse spheres)
   EXPECT_LT(r.solid_fraction, 0.70);
+}
+
+}  // namespace
+}  // namespace silodem
+
+namespace silodem {
+namespace {
+
+// A checkpoint taken anywhere in the test and continued gives the test never interrupted, bit
+// for bit: the same rows, failure points, locus and step count (one thread, so one summation
+// order). The test is stopped four times, each time continued from the bytes the last stop
+// wrote: early in the compression, near the end of the first pre-shear, in the hold at the first
+// normal stress after its pre-shear (servo on, its integral wound up), and near the end of the
+// last shear to failure. The stops are placed by counting the test's checkpoint chances up to the
+// progress line that ends each of those phases.
+TEST(ShearCell, ResumesFromACheckpointBitForBit) {
+  const Case c =
+      config::load_case_file(SILODEM_SOURCE_DIR "/tests/data/frictionless_spheres.toml", {});
+  ContactModel model;
+  const CaseReport report = derive_case(c, &model);
+  ShearTestSpec spec;
+  spec.preshear = 2e3;
+  spec.normals = {1.5e3, 1e3};
+  spec.width = 5;
+  spec.height = 4;
+  spec.inertial_number = 1e-2;
+  spec.preshear_strain = 0.1;
+  spec.preshear_max_strain = 0.2;
+  spec.represhear_strain = 0.05;
+  spec.failure_strain = 0.05;
+  spec.threads = 1;
+
+  long chances = 0;
+  ShearCheckpointing count;
+  count.stop = [&] { return ++chances < 0; };
+  std::vector<std::pair<std::string, long>> ends;  // each progress line and the chances before it
+  const ShearTestResult whole = run_shear_test(
+      c, report, model, 0, spec, [&](const std::string& m) { ends.emplace_back(m, chances); },
+      &count);
+  auto end_of = [&](const std::string& start) {
+    for (const auto& [m, n] : ends)
+      if (m.find(start) != std::string::npos) return n;
+    ADD_FAILURE() << "no progress line containing '" << start << "'";
+    return 0L;
+  };
+  const long first_preshear = end_of(": preshear 0 at"), preshear_1 = end_of(": preshear 1 at"),
+             last_shear = end_of(": shear 2 at");
+  const std::vector<long> stops = {3, first_preshear - 2, preshear_1 + 3, last_shear - 2};
+  for (std::size_t k = 1; k < stops.size(); ++k) ASSERT_GT(stops[k], stops[k - 1] + 1);
+  ASSERT_GT(chances, stops.back());
+
+  std::vector<unsigned char> saved;
+  long seen = 0, stop_at = 0;
+  ShearCheckpointing ck;
+  ck.stop = [&] { return ++seen == stop_at; };
+  ck.write = [&](const std::function<void(ByteWriter&)>& state) {
+    ByteWriter w;
+    state(w);
+    saved = w.bytes();
+  };
+  long done = 0;  // chances passed before the last stop
+  for (long at : stops) {
+    std::optional<ByteReader> from;
+    if (!saved.empty()) from.emplace(saved);
+    ck.resume = from ? &*from : nullptr;
+    seen = 0;
+    stop_at = at - done;
+    EXPECT_THROW(run_shear_test(c, report, model, 0, spec, {}, &ck), ShearInterrupted);
+    ASSERT_FALSE(saved.empty());
+    if (from) {
+      EXPECT_TRUE(from->done());  // the state was read to its end
+    }
+    done = at;
+  }
+  ByteReader last(saved);
+  ck.resume = &last;
+  seen = 0;
+  stop_at = -1;
+  const ShearTestResult resumed = run_shear_test(c, report, model, 0, spec, {}, &ck);
+  EXPECT_EQ(seen, chances - done);  // it went on where the last stop was
+
+  ASSERT_EQ(resumed.series.size(), whole.series.size());
+  for (std::size_t i = 0; i < whole.series.size(); ++i) {
+    const ShearSample &a = whole.series[i], &b = resumed.series[i];
+    ASSERT_EQ(a.phase, b.phase) << "row " << i;
+    ASSERT_EQ(a.point, b.point) << "row " << i;
+    ASSERT_EQ(a.time, b.time) << "row " << i;
+    ASSERT_EQ(a.strain, b.strain) << "row " << i;
+    ASSERT_EQ(a.sigma, b.sigma) << "row " << i;
+    ASSERT_EQ(a.tau, b.tau) << "row " << i;
+    ASSERT_EQ(a.height, b.height) << "row " << i;
+  }
+  ASSERT_EQ(resumed.points.size(), whole.points.size());
+  for (std::size_t k = 0; k < whole.points.size(); ++k) {
+    EXPECT_EQ(resumed.points[k].sigma, whole.points[k].sigma);
+    EXPECT_EQ(resumed.points[k].tau, whole.points[k].tau);
+    EXPECT_EQ(resumed.points[k].preshear.tau, whole.points[k].preshear.tau);
+  }
+  EXPECT_EQ(resumed.locus.cohesion, whole.locus.cohesion);
+  EXPECT_EQ(resumed.locus.friction_angle, whole.locus.friction_angle);
+  EXPECT_EQ(resumed.bulk_density, whole.bulk_density);
+  EXPECT_EQ(resumed.preshear_strain, whole.preshear_strain);
+  EXPECT_EQ(resumed.glued, whole.glued);
+  EXPECT_EQ(resumed.steps, whole.steps);
+  EXPECT_EQ(resumed.warnings, whole.warnings);
+}
+
+// A checkpoint keeps a result whole: what load_shear_result reads is what save_shear_result
+// wrote, every field (a test of several coals keeps its finished ones so).
+TEST(ShearCell, ResultRoundTripsThroughACheckpoint) {
+  ShearTestResult r;
+  r.coal = "Longwanggou";
+  r.particles = 1234, r.glued = 321;
+  r.width = 0.1, r.sheared_height = 0.08, r.mean_diameter = 0.009, r.shear_velocity = 0.02;
+  r.dt = 1e-5, r.bulk_density = 812.5, r.solid_fraction = 0.61;
+  r.preshear = {9e3, 5.6e3};
+  r.preshear_steady = true, r.preshear_strain = 1.6;
+  r.points.push_back({7e3, 6.9e3, 5.3e3, 0.14, {8.98e3, 5.8e3}, true});
+  r.points.push_back({3e3, 2.86e3, 2.56e3, 0.17, {8.93e3, 5.56e3}, false});
+  r.locus.cohesion = 671.0, r.locus.friction_angle = 0.5857, r.locus.flow_function = 11.0;
+  r.locus.unconfined = {1.2e3, 1.2e3}, r.locus.consolidation_tangent = false;
+  r.series.push_back({"preshear", 0, 0.48, 0.005, 8.9e3, 5.1e3, 0.167});
+  r.series.push_back({"shear", 2, 9.97, 0.25, 5.9e3, 4.4e3, 0.171});
+  r.steps = 123456789;
+  r.warnings = {"one", "two"};
+  ByteWriter w;
+  save_shear_result(w, r);
+  ByteReader in(w.bytes());
+  const ShearTestResult o = load_shear_result(in);
+  EXPECT_TRUE(in.done());
+  EXPECT_EQ(o.coal, r.coal);
+  EXPECT_EQ(o.particles, r.particles);
+  EXPECT_EQ(o.glued, r.glued);
+  EXPECT_EQ(o.width, r.width);
+  EXPECT_EQ(o.sheared_height, r.sheared_height);
+  EXPECT_EQ(o.mean_diameter, r.mean_diameter);
+  EXPECT_EQ(o.shear_velocity, r.shear_velocity);
+  EXPECT_EQ(o.dt, r.dt);
+  EXPECT_EQ(o.bulk_density, r.bulk_density);
+  EXPECT_EQ(o.solid_fraction, r.solid_fraction);
+  EXPECT_EQ(o.preshear.tau, r.preshear.tau);
+  EXPECT_EQ(o.preshear_steady, r.preshear_steady);
+  EXPECT_EQ(o.preshear_strain, r.preshear_strain);
+  ASSERT_EQ(o.points.size(), 2u);
+  EXPECT_EQ(o.points[1].sigma_target, 3e3);
+  EXPECT_EQ(o.points[1].strain_at_peak, 0.17);
+  EXPECT_EQ(o.points[1].preshear.sigma, 8.93e3);
+  EXPECT_TRUE(o.points[0].preshear_steady);
+  EXPECT_FALSE(o.points[1].preshear_steady);
+  EXPECT_EQ(o.locus.cohesion, 671.0);
+  EXPECT_EQ(o.locus.friction_angle, 0.5857);
+  EXPECT_EQ(o.locus.flow_function, 11.0);
+  EXPECT_EQ(o.locus.unconfined.radius, 1.2e3);
+  EXPECT_FALSE(o.locus.consolidation_tangent);
+  ASSERT_EQ(o.series.size(), 2u);
+  EXPECT_EQ(o.series[1].phase, "shear");
+  EXPECT_EQ(o.series[1].point, 2);
+  EXPECT_EQ(o.series[1].height, 0.171);
+  EXPECT_EQ(o.steps, r.steps);
+  EXPECT_EQ(o.warnings, r.warnings);
 }
 
 }  // namespace

@@ -12,6 +12,8 @@ class PlaneWall final : public Wall {
   std::string describe() const override;
   bool movable() const override { return true; }
   void translate(const Vec3& d) override { p_ += d; }
+  // Puts the plane through `p` (a checkpoint's position: exactly, not by a translation).
+  void place(const Vec3& p) { p_ = p; }
   const Vec3& point() const { return p_; }
   const Vec3& normal() const { return n_; }
 
