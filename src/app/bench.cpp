@@ -33,8 +33,10 @@ namespace fs = std::filesystem;
 namespace silodem::app {
 namespace {
 
-// Bump when a change to the fill or the particle state would make old cached beds wrong.
-constexpr int kFillCacheVersion = 1;
+// Bump when a change to the fill or the particle state would make old cached beds wrong, or
+// when the state's format changes (2: Simulation's SIM2, which older builds cannot read), so
+// that builds of two formats keep their own caches.
+constexpr int kFillCacheVersion = 2;
 
 fs::path default_cache_dir() {
   if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x) return fs::path(x) / "silodem";

@@ -172,9 +172,12 @@ void print_results(const nlohmann::json& doc, const fs::path& out, bool json) {
   fmt::print("wrote {}\n", (out / "shear_test.json").string());
 }
 
-// Writes the JSON, draws the figures (tools/silodem_shear.py) and prints; the tool's exit code.
-int finish(const nlohmann::json& doc, const fs::path& out, bool json) {
+// Writes the JSON (then removes `done_with`, if given: the checkpoint of the test it completes),
+// draws the figures (tools/silodem_shear.py) and prints; the tool's exit code.
+int finish(const nlohmann::json& doc, const fs::path& out, bool json,
+           const fs::path& done_with = {}) {
   write_atomically((out / "shear_test.json").string(), {doc.dump(2) + "\n"}, false);
+  if (!done_with.empty()) fs::remove(done_with);
   std::vector<std::string> tool_args = {out.string()};
   if (json) tool_args.insert(tool_args.begin(), "--quiet");  // stdout is the JSON's
   const int rc = run_tool("silodem_shear.py", tool_args, /*quiet_if_unavailable=*/true);
@@ -188,20 +191,25 @@ void require_new_dir(const std::string& dir) {
   const fs::path out(dir);
   if (fs::exists(out / kCheckpoint))
     throw InputError({}, "--out",
-                     fmt::format("'{}' holds an interrupted test: add --resume to continue it, "
-                                 "or give another directory",
+                     fmt::format("'{}' holds an interrupted test's checkpoint: add --resume to "
+                                 "continue it, or give another directory",
                                  dir));
   if (fs::exists(out) && !(fs::is_directory(out) && fs::is_empty(out)))
     throw InputError({}, "--out", fmt::format("'{}' exists and is not empty", dir));
 }
 
-// What a checkpoint must have been written by to be continued: the case file as it reads now,
-// the overrides, the coals and every option that changes the test (not --threads, which changes
-// only the summation order).
+// The procedure's version in the signature: bump it when a change to run_shear_test would make a
+// checkpoint of the old procedure go on differently, so that --resume refuses it.
+constexpr const char* kProcedure = "shear-test procedure 1 (2026-12-07)";
+
+// What a checkpoint must have been written by to be continued: this procedure, the case file as
+// it reads now, the overrides, the coals and every option that changes the test (not --threads
+// or --set simulation.threads, which change only the summation order: the result warns then).
 std::uint64_t test_signature(const ShearTestOptions& o, const ShearTestSpec& spec,
                              const std::vector<int>& coals) {
-  std::string t = read_text(o.case_path);
-  for (const auto& s : o.overrides) t += "\n--set " + s;
+  std::string t = std::string(kProcedure) + "\n" + read_text(o.case_path);
+  for (const auto& s : o.overrides)
+    if (s.rfind("simulation.threads=", 0) != 0) t += "\n--set " + s;
   t += "\ncoals";
   for (int c : coals) t += fmt::format(" {}", c);
   t += fmt::format("\npreshear {:a} normals", spec.preshear);
@@ -220,7 +228,6 @@ std::uint64_t test_signature(const ShearTestOptions& o, const ShearTestSpec& spe
 // the state of the coal under way, if `current`.
 struct TestCheckpoint {
   std::uint64_t signature = 0;
-  int threads = 0;
   std::vector<ShearTestResult> done;
   std::vector<double> done_wall;  // s, each finished coal's
   double current_wall = 0.0;      // s, spent on the coal under way before the checkpoint
@@ -229,7 +236,7 @@ struct TestCheckpoint {
 
 void put_head(ByteWriter& w, const TestCheckpoint& h) {
   w.tag("SHTE");
-  w.put(h.signature), w.put(h.threads), w.put(std::uint64_t(h.done.size()));
+  w.put(h.signature), w.put(std::uint64_t(h.done.size()));
   for (std::size_t k = 0; k < h.done.size(); ++k)
     save_shear_result(w, h.done[k]), w.put(h.done_wall[k]);
   w.put(h.current_wall), w.put(std::uint8_t(h.current));
@@ -238,7 +245,7 @@ void put_head(ByteWriter& w, const TestCheckpoint& h) {
 TestCheckpoint get_head(ByteReader& r) {
   TestCheckpoint h;
   r.tag("SHTE");
-  r.get(h.signature), r.get(h.threads);
+  r.get(h.signature);
   const std::size_t n = r.get_count(8);
   for (std::size_t k = 0; k < n; ++k) {
     h.done.push_back(load_shear_result(r));
@@ -382,7 +389,6 @@ int shear_test_command(const ShearTestOptions& o) {
   const fs::path out(o.out_dir), checkpoint = out / kCheckpoint;
   TestCheckpoint state;
   state.signature = test_signature(o, spec, coals);
-  state.threads = spec.threads;
   std::optional<ByteReader> reader;
   if (o.resume) {
     if (!fs::exists(checkpoint))
@@ -398,7 +404,7 @@ int shear_test_command(const ShearTestOptions& o) {
       reader.emplace(read_checkpoint(checkpoint.string()));
       head = get_head(*reader);
     } catch (const std::runtime_error& e) {  // foreign, damaged, of another version
-      throw InputError({}, "--resume", e.what());
+      throw InputError({}, "--resume", fmt::format("{}: {}", checkpoint.string(), e.what()));
     }
     if (head.signature != state.signature)
       throw InputError({}, "--resume",
@@ -409,11 +415,6 @@ int shear_test_command(const ShearTestOptions& o) {
       throw InputError(
           {}, "--resume",
           fmt::format("'{}' has every coal finished: nothing to resume", checkpoint.string()));
-    if (spec.threads != head.threads)
-      fmt::print(stderr,
-                 "warning: resuming with {} threads, the test had {}: the result will not be "
-                 "bitwise equal to an uninterrupted test's (summation order)\n",
-                 spec.threads, head.threads);
     state.done = std::move(head.done);
     state.done_wall = std::move(head.done_wall);
     state.current_wall = head.current_wall;
@@ -459,6 +460,8 @@ int shear_test_command(const ShearTestOptions& o) {
       };
       try {
         state.done.push_back(run_shear_test(c, report, model, coals[i], spec, progress, &ck));
+      } catch (const ShearResumeError& e) {
+        throw InputError({}, "--resume", fmt::format("{}: {}", checkpoint.string(), e.what()));
       } catch (const ShearInterrupted&) {
         fmt::print(stderr,
                    "interrupted by signal {}; checkpoint written; continue with the same command "
@@ -494,9 +497,7 @@ int shear_test_command(const ShearTestOptions& o) {
                               {"preshear_min_strain", spec.preshear_strain},
                               {"preshear_max_strain", spec.preshear_max_strain},
                               {"coals", all}};
-  const int rc = finish(doc, out, o.json);
-  fs::remove(checkpoint);  // the test is complete: shear_test.json holds it
-  return rc;
+  return finish(doc, out, o.json, checkpoint);
 }
 
 }  // namespace silodem::app

@@ -100,7 +100,11 @@ void Plate::save(ByteWriter& w, const Simulation& sim) const {
   const auto& plane = dynamic_cast<const PlaneWall&>(*sim.walls().at(wall_));
   w.tag("PLAT");
   w.put(plane.point()), w.put(plane.velocity());
-  w.put(ids_), w.put(control_), w.put(velocity_), w.put(displacement_), w.put(moved_since_build_);
+  w.put(ids_);
+  const PlateControl& c = control_;  // field by field: no padding bytes in the file
+  w.put(c.velocity), w.put(std::uint8_t(c.servo)), w.put(c.stress), w.put(c.area), w.put(c.gain);
+  w.put(c.max_speed), w.put(c.integral_time);
+  w.put(velocity_), w.put(displacement_), w.put(moved_since_build_);
   w.put(integral_), w.put(builds_seen_);
 }
 
@@ -109,7 +113,11 @@ void Plate::load(ByteReader& r, Simulation& sim) {
   r.tag("PLAT");
   plane.place(r.get<Vec3>());
   plane.set_velocity(r.get<Vec3>());
-  r.get(ids_), r.get(control_), r.get(velocity_), r.get(displacement_), r.get(moved_since_build_);
+  r.get(ids_);
+  PlateControl& c = control_;
+  r.get(c.velocity), c.servo = r.get<std::uint8_t>() != 0, r.get(c.stress), r.get(c.area);
+  r.get(c.gain), r.get(c.max_speed), r.get(c.integral_time);
+  r.get(velocity_), r.get(displacement_), r.get(moved_since_build_);
   r.get(integral_), r.get(builds_seen_);
   index_.clear();  // found again from the ids
   find_glued(sim);

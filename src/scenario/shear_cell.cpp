@@ -219,8 +219,11 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
     v_cap = 0.5 * v_shear;  // the lid's normal speed, at most half the shear speed
   };
 
+  // SHC1: the first layout of a test's state (a new layout gets a new tag, so an old file is
+  // refused instead of misread).
   auto save_state = [&](ByteWriter& w) {
-    w.tag("SHRT");
+    w.tag("SHC1");
+    w.put(std::int32_t(S.settings().threads));
     w.put(cur.stage), w.put(std::uint8_t(cur.begun)), w.put(cur.t0), w.put(cur.good);
     w.put(cur.x0), w.put(cur.target), w.put(std::uint64_t(cur.first));
     w.put(std::uint64_t(cur.least)), w.put(cur.pre_sum), w.put(cur.n_pre);
@@ -231,19 +234,33 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
   };
   if (checkpointing && checkpointing->resume) {
     ByteReader& r = *checkpointing->resume;
-    r.tag("SHRT");
-    r.get(cur.stage), cur.begun = r.get<std::uint8_t>() != 0, r.get(cur.t0), r.get(cur.good);
-    r.get(cur.x0), r.get(cur.target), cur.first = std::size_t(r.get<std::uint64_t>());
-    cur.least = std::size_t(r.get<std::uint64_t>()), r.get(cur.pre_sum), r.get(cur.n_pre);
-    res = load_shear_result(r);
-    S.load(r);
-    cell.floor().load(r, S);
-    cell.lid().load(r, S);
+    std::int32_t threads = 0;
+    try {
+      r.tag("SHC1");
+      r.get(threads);
+      r.get(cur.stage), cur.begun = r.get<std::uint8_t>() != 0, r.get(cur.t0), r.get(cur.good);
+      r.get(cur.x0), r.get(cur.target), cur.first = std::size_t(r.get<std::uint64_t>());
+      cur.least = std::size_t(r.get<std::uint64_t>()), r.get(cur.pre_sum), r.get(cur.n_pre);
+      res = load_shear_result(r);
+      S.load(r);
+      cell.floor().load(r, S);
+      cell.lid().load(r, S);
+    } catch (const std::runtime_error& e) {  // damaged, or a layout this build does not write
+      throw ShearResumeError(e.what());
+    }
+    if (!r.done()) throw ShearResumeError("the shear test's state has bytes left over");
     if (!(cur.stage >= 0 && cur.stage <= end_stage) || cur.first > res.series.size() ||
         res.coal != coal_p.name)
-      throw std::runtime_error("checkpoint: the shear test's state does not fit this test");
+      throw ShearResumeError("the shear test's state does not fit this test");
     if (cur.stage > kGlue) set_shear();
     log(fmt::format("resumed at t = {:.3f} s, {} steps", S.time(), S.step_count()));
+    if (threads != S.settings().threads) {
+      res.warnings.push_back(fmt::format(
+          "resumed with {} threads after {} until t = {:.3f} s: not bitwise the test never "
+          "stopped (summation order)",
+          S.settings().threads, threads, S.time()));
+      log(res.warnings.back());
+    }
   }
   // A checkpoint now if asked for; after a stop, none of the test's work is lost.
   auto tick = [&] {

@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -124,7 +125,9 @@ inline constexpr const char* kNoPeakWarning = "no peak before the end of the she
 // test's whole state into a writer (the caller adds its own head and writes the file), and after
 // a stop it throws ShearInterrupted. With `resume` (a reader positioned where such a function
 // began writing) the test continues from that state: the same case, spec and coal give the
-// same series, points and locus as a test never interrupted (with the same threads).
+// same series, points and locus as a test never interrupted (with the same threads; with
+// others, a warning in the result says so). A state that cannot be continued throws
+// ShearResumeError.
 struct ShearCheckpointing {
   std::function<bool()> stop;  // e.g. a signal
   std::function<bool()> due;   // e.g. the wall time since the last checkpoint
@@ -132,6 +135,10 @@ struct ShearCheckpointing {
   ByteReader* resume = nullptr;
 };
 struct ShearInterrupted {};
+// A `resume` state that cannot be read (damaged, of another layout) or that is not this test's.
+struct ShearResumeError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
 
 // A result, finished or not, in a checkpoint (a test of several coals keeps its finished ones).
 void save_shear_result(ByteWriter& w, const ShearTestResult& r);

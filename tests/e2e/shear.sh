@@ -145,17 +145,24 @@ expect_input_error "first pre-shear's largest strain below its least" "--preshea
 expect_refit_error "refit with --preshear-max-strain" "excludes" --refit "$work/st" --out "$work/rb6" \
   --preshear-max-strain 1
 
-# Stopped by SIGTERM in its first pre-shear, a test writes shear_checkpoint.bin and exits 130
-# without shear_test.json; --resume with the same command finishes it with the series and the
-# result of the test never stopped (st above: the same options, one thread).
+# Stopped by SIGTERM, a test writes shear_checkpoint.bin and exits 130 without shear_test.json;
+# --resume with the same command finishes it with the series and the result of the test never
+# stopped (st above: the same options, one thread). The test is frozen (SIGSTOP) as soon as it
+# says it is pressing, then sent SIGTERM and let go: it stops at its next checkpoint chance, early
+# in the test, however fast the machine.
+stop_when() {  # stop_when PID FILE TEXT: SIGTERM to PID once FILE holds TEXT
+  local pid=$1 file=$2 text=$3
+  for _ in $(seq 1 600); do
+    grep -q "$text" "$file" 2>/dev/null && break
+    sleep 0.05
+  done
+  kill -STOP "$pid"
+  kill -TERM "$pid"
+  kill -CONT "$pid"
+}
 "$bin" shear-test "$case_file" --out "$work/int" "${quick[@]}" 2> "$work/int.err" &
 pid=$!
-for _ in $(seq 1 600); do
-  grep -q "pressing" "$work/int.err" 2>/dev/null && break
-  sleep 0.1
-done
-sleep 2
-kill -TERM "$pid"
+stop_when "$pid" "$work/int.err" "pressing"
 wait "$pid"
 rc=$?
 [ "$rc" = 130 ] || bad "SIGTERM: exit $rc, want 130 ($(tail -2 "$work/int.err"))"
@@ -168,6 +175,11 @@ expect_input_error "resume with another seed" "another case file" --out "$work/i
   --seed 2 --resume
 expect_input_error "resume with nothing to resume" "no shear_checkpoint.bin" --out "$work/b5" \
   "${quick[@]}" --resume
+cp "$work/int/shear_checkpoint.bin" "$work/ck.bak"
+head -c 100 "$work/ck.bak" > "$work/int/shear_checkpoint.bin"
+expect_input_error "resume a truncated checkpoint" "shear_checkpoint.bin" --out "$work/int" \
+  "${quick[@]}" --resume
+cp "$work/ck.bak" "$work/int/shear_checkpoint.bin"
 "$bin" shear-test "$case_file" --out "$work/int" "${quick[@]}" --resume > /dev/null 2> "$work/res.err"
 rc=$?
 [ "$rc" = 0 ] || bad "--resume: exit $rc ($(tail -2 "$work/res.err"))"
@@ -175,14 +187,39 @@ grep -q "resumed at" "$work/res.err" || bad "--resume: no 'resumed at' line"
 [ -e "$work/int/shear_checkpoint.bin" ] && bad "--resume: the finished test kept its checkpoint"
 cmp -s "$work/st/series_glass.csv" "$work/int/series_glass.csv" ||
   bad "--resume: the series differs from the test never stopped"
-/usr/bin/python3 - "$work" <<'PY' || fail=1
+/usr/bin/python3 - "$work/st" "$work/int" <<'PY' || fail=1
 import json, sys
-w = sys.argv[1]
-(a,) = json.load(open(f"{w}/st/shear_test.json"))["coals"]
-(b,) = json.load(open(f"{w}/int/shear_test.json"))["coals"]
+(a,) = json.load(open(f"{sys.argv[1]}/shear_test.json"))["coals"]
+(b,) = json.load(open(f"{sys.argv[2]}/shear_test.json"))["coals"]
 for k in ("cohesion_kpa", "friction_angle_deg", "yield_locus", "bulk_density_kg_m3", "preshear_points"):
     assert a[k] == b[k], (k, a[k], b[k])
 assert a["cell"]["steps"] == b["cell"]["steps"], (a["cell"]["steps"], b["cell"]["steps"])
+PY
+
+# A test of two coals stopped in the second keeps the first one's result in its checkpoint:
+# resumed, its first coal ("glass", the same as the one-coal case's) is st's test exactly and
+# its second is finished too.
+two="$src/tests/data/frictionless_spheres_two.toml"
+"$bin" shear-test "$two" --out "$work/two" "${quick[@]}" 2> "$work/two.err" &
+pid=$!
+stop_when "$pid" "$work/two.err" "glass2: .*pressing"
+wait "$pid"
+rc=$?
+[ "$rc" = 130 ] || bad "two coals, SIGTERM: exit $rc, want 130 ($(tail -2 "$work/two.err"))"
+"$bin" shear-test "$two" --out "$work/two" "${quick[@]}" --resume > /dev/null 2> "$work/two2.err"
+rc=$?
+[ "$rc" = 0 ] || bad "two coals, --resume: exit $rc ($(tail -2 "$work/two2.err"))"
+grep -q "^glass: " "$work/two2.err" && bad "two coals, --resume: ran the finished coal again"
+cmp -s "$work/st/series_glass.csv" "$work/two/series_glass.csv" ||
+  bad "two coals: the first coal's series differs from the one-coal test's"
+/usr/bin/python3 - "$work/st" "$work/two" <<'PY' || fail=1
+import json, sys
+(a,) = json.load(open(f"{sys.argv[1]}/shear_test.json"))["coals"]
+g, h = json.load(open(f"{sys.argv[2]}/shear_test.json"))["coals"]
+assert (g["coal"], h["coal"]) == ("glass", "glass2"), (g["coal"], h["coal"])
+for k in ("cohesion_kpa", "friction_angle_deg", "yield_locus", "bulk_density_kg_m3"):
+    assert a[k] == g[k], (k, a[k], g[k])
+assert len(h["yield_locus"]) == 2 and h["cell"]["steps"] > 0, h
 PY
 expect_input_error "resume a finished test" "finished test" --out "$work/int" "${quick[@]}" --resume
 exit $fail

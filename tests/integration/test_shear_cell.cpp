@@ -63,11 +63,13 @@ namespace {
 
 // A checkpoint taken anywhere in the test and continued gives the test never interrupted, bit
 // for bit: the same rows, failure points, locus and step count (one thread, so one summation
-// order). The test is stopped four times, each time continued from the bytes the last stop
-// wrote: early in the compression, near the end of the first pre-shear, in the hold at the first
-// normal stress after its pre-shear (servo on, its integral wound up), and near the end of the
-// last shear to failure. The stops are placed by counting the test's checkpoint chances up to the
-// progress line that ends each of those phases.
+// order). The test is stopped six times, each time continued from the bytes the last stop
+// wrote: early in the compression, near the end of the first pre-shear, between stages (the
+// first pre-shear done, the bulk density's stage not begun), in the hold at the first normal
+// stress after its pre-shear (servo on, its integral wound up), near the end of the last shear
+// to failure, and at the very last chance (every stage done, only the fit left). The stops are
+// placed by counting the test's checkpoint chances up to the progress line that ends each of
+// those phases.
 TEST(ShearCell, ResumesFromACheckpointBitForBit) {
   const Case c =
       config::load_case_file(SILODEM_SOURCE_DIR "/tests/data/frictionless_spheres.toml", {});
@@ -100,9 +102,10 @@ TEST(ShearCell, ResumesFromACheckpointBitForBit) {
   };
   const long first_preshear = end_of(": preshear 0 at"), preshear_1 = end_of(": preshear 1 at"),
              last_shear = end_of(": shear 2 at");
-  const std::vector<long> stops = {3, first_preshear - 2, preshear_1 + 3, last_shear - 2};
-  for (std::size_t k = 1; k < stops.size(); ++k) ASSERT_GT(stops[k], stops[k - 1] + 1);
-  ASSERT_GT(chances, stops.back());
+  // The chance after a shear's progress line is the tick between its stage and the next.
+  const std::vector<long> stops = {
+      3, first_preshear - 2, first_preshear + 1, preshear_1 + 3, last_shear - 2, chances};
+  for (std::size_t k = 1; k < stops.size(); ++k) ASSERT_GT(stops[k], stops[k - 1]);
 
   std::vector<unsigned char> saved;
   long seen = 0, stop_at = 0;
@@ -161,19 +164,24 @@ TEST(ShearCell, ResumesFromACheckpointBitForBit) {
 }
 
 // A checkpoint keeps a result whole: what load_shear_result reads is what save_shear_result
-// wrote, every field (a test of several coals keeps its finished ones so).
+// wrote, every field, each given a value of its own so that two fields read in each other's
+// place would show (a test of several coals keeps its finished ones so).
 TEST(ShearCell, ResultRoundTripsThroughACheckpoint) {
   ShearTestResult r;
   r.coal = "Longwanggou";
   r.particles = 1234, r.glued = 321;
-  r.width = 0.1, r.sheared_height = 0.08, r.mean_diameter = 0.009, r.shear_velocity = 0.02;
-  r.dt = 1e-5, r.bulk_density = 812.5, r.solid_fraction = 0.61;
-  r.preshear = {9e3, 5.6e3};
+  r.width = 0.101, r.sheared_height = 0.082, r.mean_diameter = 0.0093, r.shear_velocity = 0.024;
+  r.dt = 1.5e-5, r.bulk_density = 812.5, r.solid_fraction = 0.61;
+  r.preshear = {9.01e3, 5.61e3};
   r.preshear_steady = true, r.preshear_strain = 1.6;
   r.points.push_back({7e3, 6.9e3, 5.3e3, 0.14, {8.98e3, 5.8e3}, true});
   r.points.push_back({3e3, 2.86e3, 2.56e3, 0.17, {8.93e3, 5.56e3}, false});
-  r.locus.cohesion = 671.0, r.locus.friction_angle = 0.5857, r.locus.flow_function = 11.0;
-  r.locus.unconfined = {1.2e3, 1.2e3}, r.locus.consolidation_tangent = false;
+  YieldLocus& y = r.locus;
+  y.cohesion = 671.0, y.friction_angle = 0.5857, y.rms_residual = 41.0;
+  y.cohesion_stderr = 131.0, y.friction_angle_stderr = 0.017;
+  y.unconfined = {1.21e3, 1.22e3}, y.consolidation = {15.3e3, 12.1e3};
+  y.unconfined_yield = 2.44e3, y.major_consolidation = 27.4e3, y.flow_function = 11.2;
+  y.consolidation_tangent = false;
   r.series.push_back({"preshear", 0, 0.48, 0.005, 8.9e3, 5.1e3, 0.167});
   r.series.push_back({"shear", 2, 9.97, 0.25, 5.9e3, 4.4e3, 0.171});
   r.steps = 123456789;
@@ -193,24 +201,43 @@ TEST(ShearCell, ResultRoundTripsThroughACheckpoint) {
   EXPECT_EQ(o.dt, r.dt);
   EXPECT_EQ(o.bulk_density, r.bulk_density);
   EXPECT_EQ(o.solid_fraction, r.solid_fraction);
+  EXPECT_EQ(o.preshear.sigma, r.preshear.sigma);
   EXPECT_EQ(o.preshear.tau, r.preshear.tau);
   EXPECT_EQ(o.preshear_steady, r.preshear_steady);
   EXPECT_EQ(o.preshear_strain, r.preshear_strain);
-  ASSERT_EQ(o.points.size(), 2u);
-  EXPECT_EQ(o.points[1].sigma_target, 3e3);
-  EXPECT_EQ(o.points[1].strain_at_peak, 0.17);
-  EXPECT_EQ(o.points[1].preshear.sigma, 8.93e3);
-  EXPECT_TRUE(o.points[0].preshear_steady);
-  EXPECT_FALSE(o.points[1].preshear_steady);
-  EXPECT_EQ(o.locus.cohesion, 671.0);
-  EXPECT_EQ(o.locus.friction_angle, 0.5857);
-  EXPECT_EQ(o.locus.flow_function, 11.0);
-  EXPECT_EQ(o.locus.unconfined.radius, 1.2e3);
-  EXPECT_FALSE(o.locus.consolidation_tangent);
-  ASSERT_EQ(o.series.size(), 2u);
-  EXPECT_EQ(o.series[1].phase, "shear");
-  EXPECT_EQ(o.series[1].point, 2);
-  EXPECT_EQ(o.series[1].height, 0.171);
+  ASSERT_EQ(o.points.size(), r.points.size());
+  for (std::size_t k = 0; k < r.points.size(); ++k) {
+    EXPECT_EQ(o.points[k].sigma_target, r.points[k].sigma_target) << k;
+    EXPECT_EQ(o.points[k].sigma, r.points[k].sigma) << k;
+    EXPECT_EQ(o.points[k].tau, r.points[k].tau) << k;
+    EXPECT_EQ(o.points[k].strain_at_peak, r.points[k].strain_at_peak) << k;
+    EXPECT_EQ(o.points[k].preshear.sigma, r.points[k].preshear.sigma) << k;
+    EXPECT_EQ(o.points[k].preshear.tau, r.points[k].preshear.tau) << k;
+    EXPECT_EQ(o.points[k].preshear_steady, r.points[k].preshear_steady) << k;
+  }
+  EXPECT_EQ(o.locus.cohesion, y.cohesion);
+  EXPECT_EQ(o.locus.friction_angle, y.friction_angle);
+  EXPECT_EQ(o.locus.rms_residual, y.rms_residual);
+  EXPECT_EQ(o.locus.cohesion_stderr, y.cohesion_stderr);
+  EXPECT_EQ(o.locus.friction_angle_stderr, y.friction_angle_stderr);
+  EXPECT_EQ(o.locus.unconfined.centre, y.unconfined.centre);
+  EXPECT_EQ(o.locus.unconfined.radius, y.unconfined.radius);
+  EXPECT_EQ(o.locus.consolidation.centre, y.consolidation.centre);
+  EXPECT_EQ(o.locus.consolidation.radius, y.consolidation.radius);
+  EXPECT_EQ(o.locus.unconfined_yield, y.unconfined_yield);
+  EXPECT_EQ(o.locus.major_consolidation, y.major_consolidation);
+  EXPECT_EQ(o.locus.flow_function, y.flow_function);
+  EXPECT_EQ(o.locus.consolidation_tangent, y.consolidation_tangent);
+  ASSERT_EQ(o.series.size(), r.series.size());
+  for (std::size_t i = 0; i < r.series.size(); ++i) {
+    EXPECT_EQ(o.series[i].phase, r.series[i].phase) << i;
+    EXPECT_EQ(o.series[i].point, r.series[i].point) << i;
+    EXPECT_EQ(o.series[i].time, r.series[i].time) << i;
+    EXPECT_EQ(o.series[i].strain, r.series[i].strain) << i;
+    EXPECT_EQ(o.series[i].sigma, r.series[i].sigma) << i;
+    EXPECT_EQ(o.series[i].tau, r.series[i].tau) << i;
+    EXPECT_EQ(o.series[i].height, r.series[i].height) << i;
+  }
   EXPECT_EQ(o.steps, r.steps);
   EXPECT_EQ(o.warnings, r.warnings);
 }
