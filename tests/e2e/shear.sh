@@ -150,12 +150,13 @@ expect_refit_error "refit with --preshear-max-strain" "excludes" --refit "$work/
 # stopped (st above: the same options, one thread). The test is frozen (SIGSTOP) as soon as it
 # says it is pressing, then sent SIGTERM and let go: it stops at its next checkpoint chance, early
 # in the test, however fast the machine.
-stop_when() {  # stop_when PID FILE TEXT: SIGTERM to PID once FILE holds TEXT
-  local pid=$1 file=$2 text=$3
-  for _ in $(seq 1 600); do
-    grep -q "$text" "$file" 2>/dev/null && break
+stop_when() {  # stop_when PID FILE TEXT: SIGTERM to PID once FILE holds TEXT (10 min at most)
+  local pid=$1 file=$2 text=$3 seen=0
+  for _ in $(seq 1 12000); do
+    grep -q "$text" "$file" 2>/dev/null && { seen=1; break; }
     sleep 0.05
   done
+  [ "$seen" = 1 ] || bad "no '$text' in $file within 10 min"
   kill -STOP "$pid"
   kill -TERM "$pid"
   kill -CONT "$pid"
