@@ -13,16 +13,28 @@
 #   /usr/bin/python3 studies/shear/compare_k.py COAL "OUT/k=3/kc=2.5e4_COAL_seed=*" "OUT/k=4/..."
 # Cost: about 50 min of one core a test at k = 4 (the steady pre-shear ran 1.6 of strain in 5.9),
 # more at k = 3.
-# Usage: bash studies/shear/steady_coal.sh OUT [SILODEM] [SEEDS] [KS] [COALS]
+# Usage: bash studies/shear/steady_coal.sh OUT [SILODEM] [SEEDS] [KS] [COALS] [VARIANT]
 # KS default "4 3", COALS default "Longwanggou Indonesian"; the order of the loops is seed, k,
-# coal, so that the first seeds of every coal and k come first.
+# coal, so that the first seeds of every coal and k come first. VARIANT, NAME:KEY=VALUE, adds
+# --set KEY=VALUE to every test and puts them in OUT/k=<k>/kc=2.5e4_NAME_<coal>_seed=<n>/, e.g.
+# Indonesian's own rolling friction of 5.7 (fitted to its measured friction angle):
+#   bash studies/shear/steady_coal.sh OUT SILODEM 3 4 Indonesian \
+#     roll0.8:contact.particle_particle.coal.Indonesian.rolling.friction=0.8
 set -euo pipefail
-out=${1:?usage: steady_coal.sh OUT [SILODEM] [SEEDS] [KS] [COALS]}
+out=${1:?usage: steady_coal.sh OUT [SILODEM] [SEEDS] [KS] [COALS] [VARIANT]}
 here=$(cd "$(dirname "$0")/../.." && pwd)
 silodem=${2:-$here/build/release/silodem}
 seeds=${3:-3}
 read -r -a ks <<<"${4:-4 3}"
 read -r -a coals <<<"${5:-Longwanggou Indonesian}"
+variant=${6:-}
+tag=kc=2.5e4_
+extra=()
+if [[ -n $variant ]]; then
+  [[ $variant == *:*=* ]] || { echo "VARIANT must be NAME:KEY=VALUE, not '$variant'" >&2; exit 2; }
+  tag=kc=2.5e4_${variant%%:*}_
+  extra=(--set "${variant#*:}")
+fi
 jobs_max=${JOBS:-1}
 mkdir -p "$out"
 
@@ -35,14 +47,14 @@ done
 
 run_one() {
   local seed=$1 k=$2 coal=$3
-  local dir=$out/k=$k/kc=2.5e4_${coal}_seed=$seed
+  local dir=$out/k=$k/${tag}${coal}_seed=$seed
   [[ -f $dir/shear_test.json ]] && return 0
   mkdir -p "$out/k=$k"
   local resume=()
   if [[ -f $dir/shear_checkpoint.bin ]]; then resume=(--resume); else rm -rf "$dir" "$dir.log"; fi
   echo "$(date -u +%FT%TZ) start $coal k = $k seed $seed ${resume[*]}"
   "$silodem" shear-test "$here/studies/shear/luding-epsd.toml" --coal "$coal" --seed "$seed" \
-    --threads 1 --out "$dir" "${common[@]}" --set "coarse_graining.k=$k" "${resume[@]}" >>"$dir.log" 2>&1 ||
+    --threads 1 --out "$dir" "${common[@]}" --set "coarse_graining.k=$k" "${extra[@]}" "${resume[@]}" >>"$dir.log" 2>&1 ||
     { echo "failed: $coal k = $k seed $seed (see $dir.log)"; return 1; }
   [[ -f $dir/shear_test.json ]] || { echo "failed: $coal k = $k seed $seed wrote no shear_test.json"; return 1; }
   echo "$(date -u +%FT%TZ) done $coal k = $k seed $seed"
