@@ -256,9 +256,9 @@ ShearTestResult run_shear_test(const ScenarioCase& c, const CaseReport& report,
     log(fmt::format("resumed at t = {:.3f} s, {} steps", S.time(), S.step_count()));
     if (threads != S.settings().threads) {
       res.warnings.push_back(fmt::format(
-          "resumed with {} threads after {} until t = {:.3f} s: not bitwise the test never "
-          "stopped (summation order)",
-          S.settings().threads, threads, S.time()));
+          "resumed at t = {:.3f} s with {} threads where it had {}: not bitwise the test that "
+          "was never stopped (summation order)",
+          S.time(), S.settings().threads, threads));
       log(res.warnings.back());
     }
   }
