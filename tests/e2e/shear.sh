@@ -197,6 +197,17 @@ for k in ("cohesion_kpa", "friction_angle_deg", "yield_locus", "bulk_density_kg_
 assert a["cell"]["steps"] == b["cell"]["steps"], (a["cell"]["steps"], b["cell"]["steps"])
 PY
 
+# The same checkpoint continued with two threads: allowed, and the result says so.
+mkdir -p "$work/int2"
+cp "$work/ck.bak" "$work/int2/shear_checkpoint.bin"
+quick2=("${quick[@]}")
+quick2[${#quick2[@]}-1]=2  # --threads 2
+"$bin" shear-test "$case_file" --out "$work/int2" "${quick2[@]}" --resume > /dev/null 2> "$work/res2.err"
+rc=$?
+[ "$rc" = 0 ] || bad "--resume with two threads: exit $rc ($(tail -2 "$work/res2.err"))"
+grep -q "with 2 threads where it had 1" "$work/int2/shear_test.json" ||
+  bad "--resume with two threads: no warning in shear_test.json"
+
 # A test of two coals stopped in the second keeps the first one's result in its checkpoint:
 # resumed, its first coal ("glass", the same as the one-coal case's) is st's test exactly and
 # its second is finished too.
