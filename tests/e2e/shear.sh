@@ -161,12 +161,16 @@ stop_when() {  # stop_when PID FILE TEXT: SIGTERM to PID once FILE holds TEXT (1
   kill -TERM "$pid"
   kill -CONT "$pid"
 }
-"$bin" shear-test "$case_file" --out "$work/int" "${quick[@]}" 2> "$work/int.err" &
-pid=$!
-stop_when "$pid" "$work/int.err" "pressing"
-wait "$pid"
-rc=$?
-[ "$rc" = 130 ] || bad "SIGTERM: exit $rc, want 130 ($(tail -2 "$work/int.err"))"
+stopped_test() {  # stopped_test WHAT CASE OUT TEXT: the quick test, stopped at TEXT, exits 130
+  local what=$1 case=$2 dir=$3 text=$4 pid rc
+  "$bin" shear-test "$case" --out "$dir" "${quick[@]}" 2> "$dir.err" &
+  pid=$!
+  stop_when "$pid" "$dir.err" "$text"
+  wait "$pid"
+  rc=$?
+  [ "$rc" = 130 ] || bad "$what, SIGTERM: exit $rc, want 130 ($(tail -2 "$dir.err"))"
+}
+stopped_test "one coal" "$case_file" "$work/int" "pressing"
 [ -s "$work/int/shear_checkpoint.bin" ] || bad "SIGTERM: no shear_checkpoint.bin"
 [ -e "$work/int/shear_test.json" ] && bad "SIGTERM: an unfinished test wrote shear_test.json"
 grep -q -- "--resume" "$work/int.err" || bad "SIGTERM: the message does not say --resume"
@@ -212,12 +216,7 @@ grep -q "with 2 threads where it had 1" "$work/int2/shear_test.json" ||
 # resumed, its first coal ("glass", the same as the one-coal case's) is st's test exactly and
 # its second is finished too.
 two="$src/tests/data/frictionless_spheres_two.toml"
-"$bin" shear-test "$two" --out "$work/two" "${quick[@]}" 2> "$work/two.err" &
-pid=$!
-stop_when "$pid" "$work/two.err" "glass2: .*pressing"
-wait "$pid"
-rc=$?
-[ "$rc" = 130 ] || bad "two coals, SIGTERM: exit $rc, want 130 ($(tail -2 "$work/two.err"))"
+stopped_test "two coals" "$two" "$work/two" "glass2: .*pressing"
 "$bin" shear-test "$two" --out "$work/two" "${quick[@]}" --resume > /dev/null 2> "$work/two2.err"
 rc=$?
 [ "$rc" = 0 ] || bad "two coals, --resume: exit $rc ($(tail -2 "$work/two2.err"))"
