@@ -17,14 +17,15 @@ with a few more seeds). Then each coal's k = 4 mean over its k = 3 mean, with it
 by propagation. A check with fewer than two seeds is "open". Exit status 0 only if every check
 passes.
 """
-import json
 import math
 import pathlib
 import re
 import statistics
 import sys
 
+from compare_k import fit  # one coal's entry of a run's shear_test.json
 from shear_summary import MEASURED_LOCUS as MEASURED  # kPa, deg (Table 1)
+
 BAND = 0.10  # must-show 3: within 10%
 KS = (4, 3)
 
@@ -36,12 +37,10 @@ def seeds(root, k, coal, variant):
     for d in sorted((root / f"k={k}").glob(tag + "*")):
         if not re.fullmatch(re.escape(tag) + r"\d+", d.name):
             continue
-        f = d / "shear_test.json"
-        if not f.exists():
+        if not (d / "shear_test.json").exists():
             continue
-        for c in json.loads(f.read_text())["coals"]:
-            if c["coal"] == coal:
-                found.append((c["cohesion_kpa"], c["friction_angle_deg"]))
+        c = fit(str(d), coal)
+        found.append((c["cohesion_kpa"], c["friction_angle_deg"]))
     return found
 
 
