@@ -15,11 +15,15 @@
 # more at k = 3.
 # Usage: bash studies/shear/steady_coal.sh OUT [SILODEM] [SEEDS] [KS] [COALS] [VARIANT]
 # KS default "4 3", COALS default "Longwanggou Indonesian"; the order of the loops is seed, k,
-# coal, so that the first seeds of every coal and k come first. VARIANT, NAME:KEY=VALUE, adds
-# --set KEY=VALUE to every test and puts them in OUT/k=<k>/kc=2.5e4_NAME_<coal>_seed=<n>/, e.g.
-# Indonesian's own rolling friction of 5.7 (fitted to its measured friction angle):
+# coal, so that the first seeds of every coal and k come first. VARIANT, NAME:KEY=VALUE[,KEY=VALUE
+# ...], adds --set KEY=VALUE for each pair to every test and puts them in
+# OUT/k=<k>/kc=2.5e4_NAME_<coal>_seed=<n>/, e.g. Indonesian's own rolling friction of 5.7 (fitted
+# to its measured friction angle):
 #   bash studies/shear/steady_coal.sh OUT SILODEM 3 4 Indonesian \
 #     roll0.8:contact.particle_particle.coal.Indonesian.rolling.friction=0.8
+# or its own sliding and rolling friction together:
+#   bash studies/shear/steady_coal.sh OUT SILODEM 1 4 Indonesian \
+#     slide0.9roll1.2:contact.particle_particle.coal.Indonesian.tangential.friction=0.9,contact.particle_particle.coal.Indonesian.rolling.friction=1.2
 set -euo pipefail
 out=${1:?usage: steady_coal.sh OUT [SILODEM] [SEEDS] [KS] [COALS] [VARIANT]}
 here=$(cd "$(dirname "$0")/../.." && pwd)
@@ -31,9 +35,13 @@ variant=${6:-}
 tag=kc=2.5e4_
 extra=()
 if [[ -n $variant ]]; then
-  [[ $variant == *:*=* ]] || { echo "VARIANT must be NAME:KEY=VALUE, not '$variant'" >&2; exit 2; }
+  [[ $variant == ?*:?*=* ]] || { echo "VARIANT must be NAME:KEY=VALUE[,KEY=VALUE...], not '$variant'" >&2; exit 2; }
   tag=kc=2.5e4_${variant%%:*}_
-  extra=(--set "${variant#*:}")
+  IFS=, read -r -a pairs <<<"${variant#*:}"
+  for pair in "${pairs[@]}"; do
+    [[ $pair == ?*=?* ]] || { echo "VARIANT pair must be KEY=VALUE, not '$pair' in '$variant'" >&2; exit 2; }
+    extra+=(--set "$pair")
+  done
 fi
 jobs_max=${JOBS:-1}
 mkdir -p "$out"
