@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Tests of tools/silodem_report.py, silodem_compare.py, silodem_study.py, silodem_calibrate.py.
+"""Tests of tools/silodem_report.py, silodem_compare.py, silodem_study.py, silodem_calibrate.py,
+and of studies/paper_predict_table.py.
 
 Run: /usr/bin/python3 tests/tools/test_tools.py
 Builds synthetic run directories (known data) in a temporary directory, runs
@@ -24,6 +25,7 @@ REPORT = os.path.join(TOOLS, "silodem_report.py")
 COMPARE = os.path.join(TOOLS, "silodem_compare.py")
 STUDY = os.path.join(TOOLS, "silodem_study.py")
 CALIBRATE = os.path.join(TOOLS, "silodem_calibrate.py")
+PREDICT_TABLE = os.path.normpath(os.path.join(HERE, "..", "..", "studies", "paper_predict_table.py"))
 PYTHON = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
 sys.path.insert(0, TOOLS)
 
@@ -483,6 +485,51 @@ class UnitTest(unittest.TestCase):
         self.assertEqual(records[1][2], "time since valve opening (s)")  # twin shares x
         self.assertFalse(sp.has_unit("speed ()"))
         self.assertTrue(sp.has_unit("share [%]"))
+
+
+class PredictTableTest(unittest.TestCase):
+    """studies/paper_predict_table.py on two synthetic I2-L3-like runs whose numbers follow by hand."""
+
+    def write_run(self, path, k, stretch):
+        # The bottom coal (L, 4788 kcal/kg) leaves in the first five bins, 1 kg each; then the
+        # top coal (I, 3108) in five. The bins last `stretch` seconds.
+        os.makedirs(path)
+        coals = [{"name": "Longwanggou", "symbol": "L", "heating_value_kcal_kg": 4788.0},
+                 {"name": "Indonesian", "symbol": "I", "heating_value_kcal_kg": 3108.0}]
+        with open(os.path.join(path, "summary.json"), "w") as f:
+            json.dump({"complete": True, "scenario": "I2-L3", "k": k, "coals": coals, "end": "emptied",
+                       "discharged_mass_kg": 10.0, "discharge_time_s": 10.0 * stretch}, f)
+        write_csv(os.path.join(path, "fill.csv"), ["segment", "coal", "mass_kg"],
+                  [["H1", "Longwanggou", 1.0], ["H2", "Longwanggou", 4.0], ["H3", "Indonesian", 5.0]])
+        rows, cum = [], 0.0
+        for i in range(10):
+            cum += 1.0
+            bottom = i < 5
+            rows.append([i * stretch, (i + 1) * stretch, 1.0, 1.0 / stretch, cum, 1 if bottom else 0,
+                         0 if bottom else 1, 4788 if bottom else 3108])
+        write_csv(os.path.join(path, "outlet.csv"),
+                  ["t_start_s", "t_end_s", "mass_kg", "rate_kg_s", "cumulative_kg",
+                   "fraction_Longwanggou", "fraction_Indonesian", "calorific_kcal_kg"], rows)
+
+    def test_rows_and_ratios(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            k3, k4 = os.path.join(tmp, "k3"), os.path.join(tmp, "k4")
+            self.write_run(k3, 3.0, 1.0)
+            self.write_run(k4, 4.0, 2.0)
+            p = subprocess.run([PYTHON, PREDICT_TABLE, k3, k4], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        lines = p.stdout.splitlines()
+        self.assertEqual(len(lines), 3, p.stdout)
+        # 10 kg in 10 s; the bottom coal's 95% (4.75 of 5 kg) is out at the end of bin 5; the
+        # value crosses (4788 + 3108) / 2 halfway between the centres 4.5 and 5.5 s; the mean is
+        # the equal-mass mean 3948, as is the inventory's (5 kg of each).
+        self.assertIn("I2-L3, k = 3: 10.00 of 10.00 kg in 10.0 s, 1.0000 kg/s, emptied", lines[0])
+        self.assertIn("bottom Longwanggou (5.00 kg) 95% out by 5 s", lines[0])
+        self.assertIn("first bin 4788, midpoint crossed at 5.0 s, mean 3948 (inventory 3948)", lines[0])
+        self.assertIn("midpoint crossed at 10.0 s", lines[1])
+        self.assertNotIn("experiment", p.stdout)  # measured numbers exist for L3-I2 only
+        self.assertEqual(lines[2], "I2-L3: k = 4 / k = 3: discharge time 2.000, mean rate 0.500, "
+                                   "midpoint crossing 2.000")
 
 
 if __name__ == "__main__":
