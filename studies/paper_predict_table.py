@@ -4,7 +4,8 @@ For each run directory (summary.json, outlet.csv and fill.csv, committed under v
 a live run's directory; a run still going is read from outlet_so_far.csv and progress.json and
 marked "unfinished") prints:
   - scenario, k, the filled and discharged mass, the discharge time, the mean rate and how the
-    run ended;
+    run ended; the time by which 95% of the fill was out (interpolated in the 1 s bins), which a
+    slow drip of the last few per cent does not move;
   - the bottom coal (the coal of segment H1 in fill.csv): its mass in the fill, and the time by
     which 95% of it had left (end of its 1 s bin);
   - the outlet calorific value (Eq. 17, outlet.csv's 1 s bins): in the first bin, the first time
@@ -14,7 +15,7 @@ marked "unfinished") prints:
     kg/s): the paper measured no other scenario's numbers.
 Then, for each scenario with one finished run at k = 3 and one at k = 4 (the paper's Fig. 5
 check that the scale factor does not change the answer), the ratios k = 4 / k = 3 of the
-discharge time, the mean rate and the midpoint-crossing time.
+discharge time, the mean rate, the 95%-of-the-fill time and the midpoint-crossing time.
 Usage: /usr/bin/python3 studies/paper_predict_table.py RUN_DIR [RUN_DIR ...]
 """
 import csv
@@ -83,6 +84,18 @@ def midpoint_crossing(bins, heating):
     return float("nan")
 
 
+def fill_out(bins, fraction, filled):
+    """Time at which the cumulative outflow reaches fraction of the filled mass (linear in the bin)."""
+    acc = 0.0
+    for b in bins:
+        m = float(b["mass_kg"])
+        if m > 0 and acc + m >= fraction * filled:
+            t0, t1 = float(b["t_start_s"]), float(b["t_end_s"])
+            return t0 + (t1 - t0) * (fraction * filled - acc) / m
+        acc += m
+    return float("nan")
+
+
 def bottom_out(bins, bottom):
     """Time (end of the 1 s bin) by which 95% of the bottom coal that left had left."""
     masses = [float(b["mass_kg"]) * float(b[f"fraction_{bottom}"] or 0) for b in bins]
@@ -109,12 +122,14 @@ def row(r, others):
     q_mean = sum(m * v for m, v in q) / sum(m for m, _ in q) if q else float("nan")
     q_inv = (sum(m * heating[c] for c, m in r["coal_mass"].items()) / filled) if heating else float("nan")
     mid = midpoint_crossing(bins, heating)
+    t95 = fill_out(bins, 0.95, filled)
     k = s.get("k")
     if k is None:
         k = float(json.load(open(r["run"] / "check.json")).get("k", float("nan")))
     text = (
         f"{r['run']}: {s['scenario']}, k = {float(k):g}: {out:.2f} of {filled:.2f} kg in {time:.1f} s, "
-        f"{rate:.4f} kg/s, {end}; bottom {r['bottom']} ({r['coal_mass'][r['bottom']]:.2f} kg) 95% "
+        f"{rate:.4f} kg/s, {end}; 95% of the fill out at " + (f"{t95:.1f} s" if t95 == t95 else "-") +
+        f"; bottom {r['bottom']} ({r['coal_mass'][r['bottom']]:.2f} kg) 95% "
         f"{'out' if r['finished'] else 'of what is out so far'} by {bottom_out(bins, r['bottom']):.0f} s; outlet kcal/kg: first bin {q[0][1]:.0f}, "
         f"midpoint crossed at " + (f"{mid:.1f} s" if mid == mid else "-") +
         f", mean {q_mean:.0f} (inventory {q_inv:.0f})"
@@ -122,7 +137,7 @@ def row(r, others):
     if s["scenario"] == "L3-I2" and r["finished"]:
         text += (f"; against the experiment {out / EXP_MASS - 1:+.1%}, {time / EXP_TIME - 1:+.1%}, "
                  f"{rate / EXP_RATE - 1:+.1%}")
-    return text, dict(scenario=s["scenario"], k=float(k), time=time, rate=rate, mid=mid,
+    return text, dict(scenario=s["scenario"], k=float(k), time=time, rate=rate, mid=mid, t95=t95,
                       finished=r["finished"])
 
 
@@ -142,9 +157,10 @@ def main(argv):
             print(f"{scenario}: several finished runs at one k: no k = 4 / k = 3 ratio")
         elif by_k[3.0] and by_k[4.0]:
             a, b = by_k[3.0][0], by_k[4.0][0]
-            ratio = (f"{b['mid'] / a['mid']:.3f}" if a["mid"] == a["mid"] and b["mid"] == b["mid"] else "-")
-            print(f"{scenario}: k = 4 / k = 3: discharge time {b['time'] / a['time']:.3f}, mean rate "
-                  f"{b['rate'] / a['rate']:.3f}, midpoint crossing {ratio}")
+            def ratio(key):
+                return f"{b[key] / a[key]:.3f}" if a[key] == a[key] and b[key] == b[key] else "-"
+            print(f"{scenario}: k = 4 / k = 3: discharge time {ratio('time')}, mean rate {ratio('rate')}, "
+                  f"95% of the fill out {ratio('t95')}, midpoint crossing {ratio('mid')}")
 
 
 if __name__ == "__main__":

@@ -520,16 +520,17 @@ class PredictTableTest(unittest.TestCase):
         self.assertEqual(p.returncode, 0, p.stderr)
         lines = p.stdout.splitlines()
         self.assertEqual(len(lines), 3, p.stdout)
-        # 10 kg in 10 s; the bottom coal's 95% (4.75 of 5 kg) is out at the end of bin 5; the
+        # 10 kg in 10 s, 9.5 kg of it by 9.5 s; the bottom coal's 95% (4.75 of 5 kg) is out at the end of bin 5; the
         # value crosses (4788 + 3108) / 2 halfway between the centres 4.5 and 5.5 s; the mean is
         # the equal-mass mean 3948, as is the inventory's (5 kg of each).
-        self.assertIn("I2-L3, k = 3: 10.00 of 10.00 kg in 10.0 s, 1.0000 kg/s, emptied", lines[0])
+        self.assertIn("I2-L3, k = 3: 10.00 of 10.00 kg in 10.0 s, 1.0000 kg/s, emptied; 95% of the "
+                      "fill out at 9.5 s", lines[0])
         self.assertIn("bottom Longwanggou (5.00 kg) 95% out by 5 s", lines[0])
         self.assertIn("first bin 4788, midpoint crossed at 5.0 s, mean 3948 (inventory 3948)", lines[0])
         self.assertIn("midpoint crossed at 10.0 s", lines[1])
         self.assertNotIn("experiment", p.stdout)  # measured numbers exist for L3-I2 only
         self.assertEqual(lines[2], "I2-L3: k = 4 / k = 3: discharge time 2.000, mean rate 0.500, "
-                                   "midpoint crossing 2.000")
+                                   "95% of the fill out 2.000, midpoint crossing 2.000")
 
 
 if __name__ == "__main__":
