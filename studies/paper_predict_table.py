@@ -128,7 +128,8 @@ def row(r, others):
         k = float(json.load(open(r["run"] / "check.json")).get("k", float("nan")))
     text = (
         f"{r['run']}: {s['scenario']}, k = {float(k):g}: {out:.2f} of {filled:.2f} kg in {time:.1f} s, "
-        f"{rate:.4f} kg/s, {end}; 95% of the fill out at " + (f"{t95:.1f} s" if t95 == t95 else "-") +
+        f"{rate:.4f} kg/s, {end}; 95% of the fill " +
+        (f"out at {t95:.1f} s" if t95 == t95 else f"{'never' if r['finished'] else 'not yet'} out ({out / filled:.1%})") +
         f"; bottom {r['bottom']} ({r['coal_mass'][r['bottom']]:.2f} kg) 95% "
         f"{'out' if r['finished'] else 'of what is out so far'} by {bottom_out(bins, r['bottom']):.0f} s; outlet kcal/kg: first bin {q[0][1]:.0f}, "
         f"midpoint crossed at " + (f"{mid:.1f} s" if mid == mid else "-") +
