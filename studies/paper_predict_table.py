@@ -1,13 +1,18 @@
 """Issue 16 c, the predictions: one row per paper-silo run of any scenario, and k = 4 against k = 3.
 
-For each run directory (summary.json, outlet.csv and fill.csv, committed under validation/runs/ or
-a live run's directory; a run still going is read from outlet_so_far.csv and progress.json and
-marked "unfinished") prints:
-  - scenario, k, the filled and discharged mass, the discharge time, the mean rate and how the
-    run ended; the time by which 95% of the fill was out (interpolated in the 1 s bins), which a
-    slow drip of the last few per cent does not move;
-  - the bottom coal (the coal of segment H1 in fill.csv): its mass in the fill, and the time by
-    which 95% of it had left (end of its 1 s bin);
+For each run directory prints one row. A finished run is read from summary.json, outlet.csv and
+fill.csv (a run directory, or its small files committed under validation/runs/); a run still
+going from outlet_so_far.csv, progress.json, fill.csv and check.json, which is also what a
+committed `unfinished/` folder holds (the coals' heating values from its case.toml, or from another
+run given beside it); such rows say "unfinished" and their times are "so far".
+A row gives:
+  - scenario (summary.json's; without one, the fill's layers from the top, each coal by its
+    initial, e.g. I2-L3), k, the filled and discharged mass, the discharge time, the mean rate
+    and how the run ended;
+  - the time by which 95% of the fill was out (interpolated in the 1 s bins of outlet.csv), or
+    that it never was; it falls inside a slow tail when the tail holds more than 5% of the fill;
+  - the bottom coal (the coal of segment H1 in fill.csv): its mass in the fill, and the time
+    (end of its 1 s bin) by which 95% of the bottom coal that left had left;
   - the outlet calorific value (Eq. 17, outlet.csv's 1 s bins): in the first bin, the first time
     it crosses the midpoint of the two coals' values (interpolated between bin centres), and the
     mass-weighted mean over the run against the inventory's (the fill's) mean;
@@ -15,20 +20,42 @@ marked "unfinished") prints:
     kg/s): the paper measured no other scenario's numbers.
 Then, for each scenario with one finished run at k = 3 and one at k = 4 (the paper's Fig. 5
 check that the scale factor does not change the answer), the ratios k = 4 / k = 3 of the
-discharge time, the mean rate, the 95%-of-the-fill time and the midpoint-crossing time.
+discharge time, the mean rate, the 95%-of-the-fill time and the midpoint-crossing time, with how
+each run ended (a ratio of two runs that ended differently compares different things).
 Usage: /usr/bin/python3 studies/paper_predict_table.py RUN_DIR [RUN_DIR ...]
 """
 import csv
 import json
+import math
 import pathlib
 import sys
+import tomllib
 
 EXP_MASS, EXP_TIME, EXP_RATE = 30.2, 90.0, 0.335  # PHYSICS.md 7 (the paper, section 4.1.3)
+NAN = float("nan")
+
+
+def load_json(path):
+    if not path.exists():
+        raise SystemExit(f"error: {path} is missing")
+    return json.load(open(path))
+
+
+def layers(fill):
+    """The scenario name of a fill, from the top: runs of one coal, each as its initial and count."""
+    order = sorted(fill, key=lambda s: int(s["segment"].lstrip("H")), reverse=True)
+    parts = []
+    for s in order:
+        if parts and parts[-1][0] == s["coal"]:
+            parts[-1][1] += 1
+        else:
+            parts.append([s["coal"], 1])
+    return "-".join(f"{coal[0]}{n}" for coal, n in parts)
 
 
 def read_run(run):
     run = pathlib.Path(run)
-    summary = json.load(open(run / "summary.json"))
+    summary = json.load(open(run / "summary.json")) if (run / "summary.json").exists() else {}
     finished = summary.get("complete") is True
     outlet = run / ("outlet.csv" if finished else "outlet_so_far.csv")
     if not outlet.exists():
@@ -40,48 +67,54 @@ def read_run(run):
     h1 = [s for s in fill if s["segment"] == "H1"]
     if not h1:
         raise SystemExit(f"error: {run / 'fill.csv'} has no segment H1")
-    bottom = h1[0]["coal"]
     coal_mass = {}
     for s in fill:
         coal_mass[s["coal"]] = coal_mass.get(s["coal"], 0.0) + float(s["mass_kg"])
     if finished:
         heating = {c["name"]: float(c["heating_value_kcal_kg"]) for c in summary["coals"]}
+        k, time, end = float(summary["k"]), float(summary["discharge_time_s"]), summary["end"]
+        out = float(summary["discharged_mass_kg"])
+        inventory = float(summary["inventory_calorific_kcal_kg"])
     else:
+        check = load_json(run / "check.json")
+        progress = load_json(run / "progress.json")
         heating = None
-    return dict(run=run, summary=summary, finished=finished, bins=bins, bottom=bottom, coal_mass=coal_mass,
-                heating=heating)
+        if (run / "case.toml").exists():  # a live run's directory has its case
+            with open(run / "case.toml", "rb") as f:
+                heating = {c["name"]: float(c["heating_value_kcal_kg"]) for c in tomllib.load(f)["coal"]}
+        k, time = float(check["k"]), float(bins[-1]["t_end_s"])
+        end = f"unfinished (outflow read to {time:.1f} s, the run at {float(progress['t_s']):.1f} s)"
+        out = sum(float(b["mass_kg"]) for b in bins)
+        inventory = float(check.get("inventory_calorific_kcal_kg", NAN))
+    return dict(run=run, scenario=summary.get("scenario") or layers(fill), finished=finished, bins=bins,
+                bottom=h1[0]["coal"], coal_mass=coal_mass, heating=heating, k=k, time=time, end=end,
+                out=out, inventory=inventory)
 
 
 def heating_values(r, others):
-    """The coals' heating values: the run's summary, or a finished run's of the same list."""
+    """The coals' heating values: the run's summary or case, or another run's of the same coals."""
     if r["heating"]:
         return r["heating"]
     for o in others:
         if o["heating"] and set(o["heating"]) >= set(r["coal_mass"]):
             return o["heating"]
-    # An unfinished run alone: Eq. 17 inverted on a bin of one coal only.
-    h = {}
-    for b in r["bins"]:
-        for c in r["coal_mass"]:
-            if float(b[f"fraction_{c}"] or 0) == 1.0 and b["calorific_kcal_kg"]:
-                h[c] = float(b["calorific_kcal_kg"])
-    return h if len(h) == len(r["coal_mass"]) else None
+    return None
 
 
 def midpoint_crossing(bins, heating):
     """First time the outlet value crosses the midpoint of the two coals' values (bin centres)."""
     if heating is None or len(heating) != 2:
-        return float("nan")
+        return NAN
     mid = sum(heating.values()) / 2
     pts = [(0.5 * (float(b["t_start_s"]) + float(b["t_end_s"])), float(b["calorific_kcal_kg"]))
            for b in bins if float(b["mass_kg"]) > 0 and b["calorific_kcal_kg"]]
     if not pts:
-        return float("nan")
+        return NAN
     first_side = pts[0][1] > mid
     for (t0, q0), (t1, q1) in zip(pts, pts[1:]):
         if (q1 > mid) != first_side:
             return t0 + (t1 - t0) * (q0 - mid) / (q0 - q1)
-    return float("nan")
+    return NAN
 
 
 def fill_out(bins, fraction, filled):
@@ -93,7 +126,7 @@ def fill_out(bins, fraction, filled):
             t0, t1 = float(b["t_start_s"]), float(b["t_end_s"])
             return t0 + (t1 - t0) * (fraction * filled - acc) / m
         acc += m
-    return float("nan")
+    return NAN
 
 
 def bottom_out(bins, bottom):
@@ -104,42 +137,49 @@ def bottom_out(bins, bottom):
         acc += m
         if total > 0 and acc >= 0.95 * total:
             return float(b["t_end_s"])
-    return float("nan")
+    return NAN
+
+
+def fmt_time(t, missing):
+    return f"{t:.1f} s" if not math.isnan(t) else missing
 
 
 def row(r, others):
-    s, bins = r["summary"], r["bins"]
+    bins, out, time = r["bins"], r["out"], r["time"]
     heating = heating_values(r, others)
-    out = float(s["discharged_mass_kg"]) if r["finished"] else sum(float(b["mass_kg"]) for b in bins)
     filled = sum(r["coal_mass"].values())
-    if r["finished"]:
-        time, end = float(s["discharge_time_s"]), s["end"]
-    else:
-        progress = json.load(open(r["run"] / "progress.json"))
-        time, end = float(progress["t_s"]), f"unfinished at {float(progress['t_s']):.1f} s"
-    rate = out / time if time > 0 else float("nan")
-    q = [(float(b["mass_kg"]), float(b["calorific_kcal_kg"])) for b in bins if b["calorific_kcal_kg"]]
-    q_mean = sum(m * v for m, v in q) / sum(m for m, _ in q) if q else float("nan")
-    q_inv = (sum(m * heating[c] for c, m in r["coal_mass"].items()) / filled) if heating else float("nan")
+    rate = out / time if time > 0 else NAN
+    q = [(float(b["mass_kg"]), float(b["calorific_kcal_kg"])) for b in bins
+         if float(b["mass_kg"]) > 0 and b["calorific_kcal_kg"]]
+    q_mean = sum(m * v for m, v in q) / sum(m for m, _ in q) if q else NAN
     mid = midpoint_crossing(bins, heating)
     t95 = fill_out(bins, 0.95, filled)
-    k = s.get("k")
-    if k is None:
-        k = float(json.load(open(r["run"] / "check.json")).get("k", float("nan")))
+    so_far = "" if r["finished"] else " so far"
+    t_bottom = bottom_out(bins, r["bottom"])
     text = (
-        f"{r['run']}: {s['scenario']}, k = {float(k):g}: {out:.2f} of {filled:.2f} kg in {time:.1f} s, "
-        f"{rate:.4f} kg/s, {end}; 95% of the fill " +
-        (f"out at {t95:.1f} s" if t95 == t95 else f"{'never' if r['finished'] else 'not yet'} out ({out / filled:.1%})") +
-        f"; bottom {r['bottom']} ({r['coal_mass'][r['bottom']]:.2f} kg) 95% "
-        f"{'out' if r['finished'] else 'of what is out so far'} by {bottom_out(bins, r['bottom']):.0f} s; outlet kcal/kg: first bin {q[0][1]:.0f}, "
-        f"midpoint crossed at " + (f"{mid:.1f} s" if mid == mid else "-") +
-        f", mean {q_mean:.0f} (inventory {q_inv:.0f})"
+        f"{r['run']}: {r['scenario']}, k = {r['k']:g}: {out:.2f} of {filled:.2f} kg in {time:.1f} s, "
+        f"{rate:.4f} kg/s, {r['end']}; 95% of the fill " +
+        (f"out at {t95:.1f} s" if not math.isnan(t95) else
+         f"{'never' if r['finished'] else 'not yet'} out ({out / filled:.1%})") +
+        f"; bottom {r['bottom']} ({r['coal_mass'][r['bottom']]:.2f} kg): 95% of what left{so_far} out by "
+        + (f"{t_bottom:.0f} s" if not math.isnan(t_bottom) else "-") +
+        "; outlet kcal/kg: first bin " + (f"{q[0][1]:.0f}" if q else "-") +
+        ", midpoint crossed at " + fmt_time(mid, "-" if r["finished"] else "- (not yet)") +
+        f", mean{so_far} {q_mean:.0f} (inventory {r['inventory']:.0f})"
     )
-    if s["scenario"] == "L3-I2" and r["finished"]:
+    if r["scenario"] == "L3-I2" and r["finished"]:
         text += (f"; against the experiment {out / EXP_MASS - 1:+.1%}, {time / EXP_TIME - 1:+.1%}, "
                  f"{rate / EXP_RATE - 1:+.1%}")
-    return text, dict(scenario=s["scenario"], k=float(k), time=time, rate=rate, mid=mid, t95=t95,
-                      finished=r["finished"])
+    return text, dict(scenario=r["scenario"], k=r["k"], time=time, rate=rate, mid=mid, t95=t95,
+                      finished=r["finished"], end=r["end"])
+
+
+def ratio_line(scenario, a, b):
+    def ratio(key):
+        return f"{b[key] / a[key]:.3f}" if not (math.isnan(a[key]) or math.isnan(b[key])) else "-"
+    return (f"{scenario}: k = 4 / k = 3: discharge time {ratio('time')}, mean rate {ratio('rate')}, "
+            f"95% of the fill out {ratio('t95')}, midpoint crossing {ratio('mid')} (k = 3: {a['end']}; "
+            f"k = 4: {b['end']})")
 
 
 def main(argv):
@@ -157,11 +197,7 @@ def main(argv):
         if any(len(v) > 1 for v in by_k.values()):
             print(f"{scenario}: several finished runs at one k: no k = 4 / k = 3 ratio")
         elif by_k[3.0] and by_k[4.0]:
-            a, b = by_k[3.0][0], by_k[4.0][0]
-            def ratio(key):
-                return f"{b[key] / a[key]:.3f}" if a[key] == a[key] and b[key] == b[key] else "-"
-            print(f"{scenario}: k = 4 / k = 3: discharge time {ratio('time')}, mean rate {ratio('rate')}, "
-                  f"95% of the fill out {ratio('t95')}, midpoint crossing {ratio('mid')}")
+            print(ratio_line(scenario, by_k[3.0][0], by_k[4.0][0]))
 
 
 if __name__ == "__main__":

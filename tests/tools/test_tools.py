@@ -488,49 +488,77 @@ class UnitTest(unittest.TestCase):
 
 
 class PredictTableTest(unittest.TestCase):
-    """studies/paper_predict_table.py on two synthetic I2-L3-like runs whose numbers follow by hand."""
+    """studies/paper_predict_table.py on synthetic runs whose numbers follow by hand.
 
-    def write_run(self, path, k, stretch):
-        # The bottom coal (L, 4788 kcal/kg) leaves in the first five bins, 1 kg each; then the
-        # top coal (I, 3108) in five. The bins last `stretch` seconds.
+    The fill: Longwanggou (4788 kcal/kg) 1 + 2 kg in H1-H2, Indonesian (3108) 6 kg in H3, so
+    9 kg, inventory (3 x 4788 + 6 x 3108) / 9 = 3668. The outflow in 1 s bins (k = 3) or 2 s bins
+    (k = 4): 1.0 and 1.5 kg of Longwanggou, 2.0 kg a quarter Longwanggou (3528 kcal/kg), then
+    Indonesian 2.0, 1.5, 0.5 and, at k = 3 only, 0.3 kg.
+    """
+
+    MASSES = [1.0, 1.5, 2.0, 2.0, 1.5, 0.5, 0.3]
+    X_L = [1.0, 1.0, 0.25, 0.0, 0.0, 0.0, 0.0]
+
+    def write_run(self, path, k, width, nbins, finished=True):
         os.makedirs(path)
+        write_csv(os.path.join(path, "fill.csv"), ["segment", "coal", "mass_kg"],
+                  [["H1", "Longwanggou", 1.0], ["H2", "Longwanggou", 2.0], ["H3", "Indonesian", 6.0]])
+        rows, cum = [], 0.0
+        for i in range(nbins):
+            m, x = self.MASSES[i], self.X_L[i]
+            cum += m
+            rows.append([i * width, (i + 1) * width, m, m / width, cum, x, 1 - x, x * 4788 + (1 - x) * 3108])
+        header = ["t_start_s", "t_end_s", "mass_kg", "rate_kg_s", "cumulative_kg", "fraction_Longwanggou",
+                  "fraction_Indonesian", "calorific_kcal_kg"]
+        if not finished:  # a committed unfinished/ folder: no summary.json, no case.toml
+            write_csv(os.path.join(path, "outlet_so_far.csv"), header, rows)
+            with open(os.path.join(path, "check.json"), "w") as f:
+                json.dump({"k": k, "inventory_calorific_kcal_kg": 3668.0}, f)
+            with open(os.path.join(path, "progress.json"), "w") as f:
+                json.dump({"t_s": nbins * width + 0.4}, f)
+            return
+        write_csv(os.path.join(path, "outlet.csv"), header, rows)
         coals = [{"name": "Longwanggou", "symbol": "L", "heating_value_kcal_kg": 4788.0},
                  {"name": "Indonesian", "symbol": "I", "heating_value_kcal_kg": 3108.0}]
+        stopped = nbins < len(self.MASSES)
         with open(os.path.join(path, "summary.json"), "w") as f:
-            json.dump({"complete": True, "scenario": "I2-L3", "k": k, "coals": coals, "end": "emptied",
-                       "discharged_mass_kg": 10.0, "discharge_time_s": 10.0 * stretch}, f)
-        write_csv(os.path.join(path, "fill.csv"), ["segment", "coal", "mass_kg"],
-                  [["H1", "Longwanggou", 1.0], ["H2", "Longwanggou", 4.0], ["H3", "Indonesian", 5.0]])
-        rows, cum = [], 0.0
-        for i in range(10):
-            cum += 1.0
-            bottom = i < 5
-            rows.append([i * stretch, (i + 1) * stretch, 1.0, 1.0 / stretch, cum, 1 if bottom else 0,
-                         0 if bottom else 1, 4788 if bottom else 3108])
-        write_csv(os.path.join(path, "outlet.csv"),
-                  ["t_start_s", "t_end_s", "mass_kg", "rate_kg_s", "cumulative_kg",
-                   "fraction_Longwanggou", "fraction_Indonesian", "calorific_kcal_kg"], rows)
+            json.dump({"complete": True, "scenario": "I1-L2", "k": k, "coals": coals,
+                       "end": "flow stopped" if stopped else "emptied", "discharged_mass_kg": cum,
+                       "discharge_time_s": nbins * width, "inventory_calorific_kcal_kg": 3668.0}, f)
 
     def test_rows_and_ratios(self):
         with tempfile.TemporaryDirectory() as tmp:
-            k3, k4 = os.path.join(tmp, "k3"), os.path.join(tmp, "k4")
-            self.write_run(k3, 3.0, 1.0)
-            self.write_run(k4, 4.0, 2.0)
-            p = subprocess.run([PYTHON, PREDICT_TABLE, k3, k4], capture_output=True, text=True)
+            k3, k4, live = (os.path.join(tmp, n) for n in ("k3", "k4", "live"))
+            self.write_run(k3, 3.0, 1.0, 7)
+            self.write_run(k4, 4.0, 2.0, 6)
+            self.write_run(live, 3.0, 1.0, 2, finished=False)
+            p = subprocess.run([PYTHON, PREDICT_TABLE, k3, k4, live], capture_output=True, text=True)
         self.assertEqual(p.returncode, 0, p.stderr)
         lines = p.stdout.splitlines()
-        self.assertEqual(len(lines), 3, p.stdout)
-        # 10 kg in 10 s, 9.5 kg of it by 9.5 s; the bottom coal's 95% (4.75 of 5 kg) is out at the end of bin 5; the
-        # value crosses (4788 + 3108) / 2 halfway between the centres 4.5 and 5.5 s; the mean is
-        # the equal-mass mean 3948, as is the inventory's (5 kg of each).
-        self.assertIn("I2-L3, k = 3: 10.00 of 10.00 kg in 10.0 s, 1.0000 kg/s, emptied; 95% of the "
-                      "fill out at 9.5 s", lines[0])
-        self.assertIn("bottom Longwanggou (5.00 kg) 95% out by 5 s", lines[0])
-        self.assertIn("first bin 4788, midpoint crossed at 5.0 s, mean 3948 (inventory 3948)", lines[0])
-        self.assertIn("midpoint crossed at 10.0 s", lines[1])
+        self.assertEqual(len(lines), 4, p.stdout)
+        # k = 3: 8.8 kg in 7 s; 95% of the 9 kg fill (8.55 kg) is out 0.05 / 0.3 into the last bin;
+        # the Longwanggou that left (3 kg) is 95% out by the end of bin 3; the outlet value
+        # crosses (4788 + 3108) / 2 = 3948 between the centres 1.5 s (4788) and 2.5 s (3528), at
+        # 1.5 + 840 / 1260 s; the outflow's mean is (3 x 4788 + 5.8 x 3108) / 8.8 = 3680.7.
+        self.assertIn("I1-L2, k = 3: 8.80 of 9.00 kg in 7.0 s, 1.2571 kg/s, emptied; 95% of the fill "
+                      "out at 6.2 s; bottom Longwanggou (3.00 kg): 95% of what left out by 3 s; outlet "
+                      "kcal/kg: first bin 4788, midpoint crossed at 2.2 s, mean 3681 (inventory 3668)",
+                      lines[0])
+        # k = 4: 8.5 kg of 9 (94.4%) in 12 s, never 95%; the crossing at twice k = 3's time.
+        self.assertIn("8.50 of 9.00 kg in 12.0 s, 0.7083 kg/s, flow stopped; 95% of the fill never "
+                      "out (94.4%)", lines[1])
+        self.assertIn("midpoint crossed at 4.3 s", lines[1])
+        # The unfinished folder: its scenario from the fill's layers, its k from check.json, its
+        # heating values from the finished runs beside it, its time the last bin's end.
+        self.assertIn("I1-L2, k = 3: 2.50 of 9.00 kg in 2.0 s, 1.2500 kg/s, unfinished (outflow read "
+                      "to 2.0 s, the run at 2.4 s); 95% of the fill not yet out (27.8%)", lines[2])
+        self.assertIn("95% of what left so far out by 2 s", lines[2])
+        self.assertIn("midpoint crossed at - (not yet), mean so far 4788 (inventory 3668)", lines[2])
         self.assertNotIn("experiment", p.stdout)  # measured numbers exist for L3-I2 only
-        self.assertEqual(lines[2], "I2-L3: k = 4 / k = 3: discharge time 2.000, mean rate 0.500, "
-                                   "95% of the fill out 2.000, midpoint crossing 2.000")
+        # 12 / 7, (8.5 / 12) / (8.8 / 7), no 95% time at k = 4, 4.333 / 2.1667.
+        self.assertEqual(lines[3], "I1-L2: k = 4 / k = 3: discharge time 1.714, mean rate 0.563, 95% of "
+                                   "the fill out -, midpoint crossing 2.000 (k = 3: emptied; k = 4: flow "
+                                   "stopped)")
 
 
 if __name__ == "__main__":
