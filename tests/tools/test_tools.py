@@ -556,9 +556,25 @@ class PredictTableTest(unittest.TestCase):
         self.assertIn("midpoint crossed at - (not yet), mean so far 4788 (inventory 3668)", lines[2])
         self.assertNotIn("experiment", p.stdout)  # measured numbers exist for L3-I2 only
         # 12 / 7, (8.5 / 12) / (8.8 / 7), no 95% time at k = 4, 4.333 / 2.1667.
-        self.assertEqual(lines[3], "I1-L2: k = 4 / k = 3: discharge time 1.714, mean rate 0.563, 95% of "
-                                   "the fill out -, midpoint crossing 2.000 (k = 3: emptied; k = 4: flow "
-                                   "stopped)")
+        self.assertEqual(lines[3], "I1-L2: k = 4 / k = 3 (1 / 1 runs, their means): discharge time 1.714, "
+                                   "mean rate 0.563, 95% of the fill out -, midpoint crossing 2.000 (k = 3: "
+                                   "emptied; k = 4: flow stopped)")
+
+    def test_means_over_seeds(self):
+        # Two k = 3 seeds, the second with 2 s bins: means 10.5 s, (1.2571 + 0.6286) / 2 kg/s,
+        # 95% out at (6.1667 + 12.333) / 2 s, crossings (2.1667 + 4.3333) / 2 s; one k = 4 run
+        # with 1 s bins: 7 s, 1.2571 kg/s, 6.1667 s, 2.1667 s.
+        with tempfile.TemporaryDirectory() as tmp:
+            a, b, c = (os.path.join(tmp, n) for n in ("a", "b", "c"))
+            self.write_run(a, 3.0, 1.0, 7)
+            self.write_run(b, 3.0, 2.0, 7)
+            self.write_run(c, 4.0, 1.0, 7)
+            p = subprocess.run([PYTHON, PREDICT_TABLE, a, b, c], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertEqual(p.stdout.splitlines()[-1],
+                         "I1-L2: k = 4 / k = 3 (1 / 2 runs, their means): discharge time 0.667, mean rate "
+                         "1.333, 95% of the fill out 0.667, midpoint crossing 0.667 (k = 3: emptied, "
+                         "emptied; k = 4: emptied)")
 
 
 if __name__ == "__main__":
