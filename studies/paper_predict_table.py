@@ -3,7 +3,7 @@
 For each run directory prints one row. A finished run is read from summary.json, outlet.csv and
 fill.csv (a run directory, or its small files committed under validation/runs/); a run still
 going from outlet_so_far.csv, progress.json, fill.csv and check.json, which is also what a
-committed `unfinished/` folder holds (the coals' heating values from its case.toml, or from another
+committed `unfinished/` folder holds (given it or the run directory above it; the coals' heating values from its case.toml, or from another
 run given beside it); such rows say "unfinished" and their times are "so far".
 A row gives:
   - scenario (summary.json's; without one, the fill's layers from the top, each coal by its
@@ -56,6 +56,8 @@ def layers(fill):
 
 def read_run(run):
     run = pathlib.Path(run)
+    if not (run / "summary.json").exists() and (run / "unfinished").is_dir():
+        run = run / "unfinished"  # a committed run directory that holds only its unfinished state
     summary = json.load(open(run / "summary.json")) if (run / "summary.json").exists() else {}
     finished = summary.get("complete") is True
     outlet = run / ("outlet.csv" if finished else "outlet_so_far.csv")
