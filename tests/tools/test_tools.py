@@ -531,7 +531,8 @@ class PredictTableTest(unittest.TestCase):
             k3, k4, live = (os.path.join(tmp, n) for n in ("k3", "k4", "live"))
             self.write_run(k3, 3.0, 1.0, 7)
             self.write_run(k4, 4.0, 2.0, 6)
-            self.write_run(live, 3.0, 1.0, 2, finished=False)
+            # committed as validation/runs/ keeps it: the run directory holds only unfinished/
+            self.write_run(os.path.join(live, "unfinished"), 3.0, 1.0, 2, finished=False)
             p = subprocess.run([PYTHON, PREDICT_TABLE, k3, k4, live], capture_output=True, text=True)
         self.assertEqual(p.returncode, 0, p.stderr)
         lines = p.stdout.splitlines()
