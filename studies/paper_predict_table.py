@@ -3,8 +3,9 @@
 For each run directory prints one row. A finished run is read from summary.json, outlet.csv and
 fill.csv (a run directory, or its small files committed under validation/runs/); a run still
 going from outlet_so_far.csv, progress.json, fill.csv and check.json, which is also what a
-committed `unfinished/` folder holds (given it or the run directory above it; the coals' heating values from its case.toml, or from another
-run given beside it); such rows say "unfinished" and their times are "so far".
+committed `unfinished/` folder holds (given it or the run directory above it; the coals' heating
+values from its case.toml, from another run given beside it, or solved from its own outlet bins,
+each a mix of the two coals); such rows say "unfinished" and their times are "so far".
 A row gives:
   - scenario (summary.json's; without one, the fill's layers from the top, each coal by its
     initial, e.g. I2-L3), k, the filled and discharged mass, the discharge time, the mean rate
@@ -95,13 +96,29 @@ def read_run(run):
 
 
 def heating_values(r, others):
-    """The coals' heating values: the run's summary or case, or another run's of the same coals."""
+    """The coals' heating values: the run's summary or case, another run's of the same coals, or
+    solved from the run's own outlet bins, each a mix of the two (a committed unfinished/ folder
+    has no case)."""
     if r["heating"]:
         return r["heating"]
     for o in others:
         if o["heating"] and set(o["heating"]) >= set(r["coal_mass"]):
             return o["heating"]
-    return None
+    coals = sorted(r["coal_mass"])
+    if len(coals) != 2:
+        return None
+    # each bin's value is x_a H_a + x_b H_b: the least-squares H over the bins (normal equations)
+    saa = sab = sbb = saq = sbq = 0.0
+    for b in r["bins"]:
+        if float(b["mass_kg"]) <= 0 or not b["calorific_kcal_kg"]:
+            continue
+        xa, xb = (float(b.get(f"fraction_{c}") or 0.0) for c in coals)
+        q = float(b["calorific_kcal_kg"])
+        saa, sab, sbb, saq, sbq = saa + xa * xa, sab + xa * xb, sbb + xb * xb, saq + xa * q, sbq + xb * q
+    det = saa * sbb - sab * sab
+    if det <= 1e-9 * max(saa * sbb, 1e-300):
+        return None  # every bin holds the coals in one ratio (or one coal only): not determined
+    return {coals[0]: (sbb * saq - sab * sbq) / det, coals[1]: (saa * sbq - sab * saq) / det}
 
 
 def midpoint_crossing(bins, heating):

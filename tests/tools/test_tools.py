@@ -561,6 +561,18 @@ class PredictTableTest(unittest.TestCase):
                                    "mean rate 0.563, 95% of the fill out -, midpoint crossing 2.000 (k = 3: "
                                    "emptied; k = 4: flow stopped)")
 
+    def test_unfinished_alone_reads_heating_from_pure_bins(self):
+        # An unfinished folder with no finished run beside it: the two heating values solved from
+        # its bins (pure Longwanggou 4788, a quarter-Longwanggou mix 3528; no pure Indonesian bin
+        # in 3 bins), so the crossing is k = 3's 1.5 + 840 / 1260 s; with bins of Longwanggou
+        # only it stays "not yet" (above).
+        with tempfile.TemporaryDirectory() as tmp:
+            run = os.path.join(tmp, "run")
+            self.write_run(os.path.join(run, "unfinished"), 3.0, 1.0, 3, finished=False)
+            p = subprocess.run([PYTHON, PREDICT_TABLE, run], capture_output=True, text=True)
+        self.assertEqual(p.returncode, 0, p.stderr)
+        self.assertIn("midpoint crossed at 2.2 s, mean so far", p.stdout)
+
     def test_means_over_seeds(self):
         # Two k = 3 seeds, the second with 2 s bins: means 10.5 s, (1.2571 + 0.6286) / 2 kg/s,
         # 95% out at (6.1667 + 12.333) / 2 s, crossings (2.1667 + 4.3333) / 2 s; one k = 4 run
