@@ -561,7 +561,7 @@ class PredictTableTest(unittest.TestCase):
                                    "mean rate 0.563, 95% of the fill out -, midpoint crossing 2.000 (k = 3: "
                                    "emptied; k = 4: flow stopped)")
 
-    def test_unfinished_alone_reads_heating_from_pure_bins(self):
+    def test_unfinished_alone_solves_heating_from_its_bins(self):
         # An unfinished folder with no finished run beside it: the two heating values solved from
         # its bins (pure Longwanggou 4788, a quarter-Longwanggou mix 3528; no pure Indonesian bin
         # in 3 bins), so the crossing is k = 3's 1.5 + 840 / 1260 s; with bins of Longwanggou
